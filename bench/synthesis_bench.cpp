@@ -1,0 +1,110 @@
+// Measures the continuous synthesis methods on exemplars: energy (axis/oblique), position coverage,
+// colour histogram distance, time, peak memory. Usage:
+//   synthesis_bench [--size N] [--methods chen-wang,kopf] [--iterations I] [--threads T] [--seed S]
+//                   [--report-dir DIR] [--slices DIR] EXEMPLAR.png...
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "synthesis/ColorSpace.h"
+#include "synthesis/synthesizeSolid.h"
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+/// Writes the middle x, y and z slices side by side as an sRGB PNG.
+void writeSlices(const solidtex::SolidVolume& v, const std::string& path) {
+  const int n = v.dims.x;
+  cv::Mat img(n, 3 * n + 8, CV_8UC3, cv::Scalar(0, 0, 0));
+  for (int a = 0; a < 3; ++a)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        int x = i, y = j, z = n / 2;
+        if (a == 0) x = n / 2, y = i, z = j;
+        if (a == 1) x = i, y = n / 2, z = j;
+        const auto& c = v.color[v.dims.index(x, y, z)];
+        cv::Vec3b& p = img.at<cv::Vec3b>(j, a * (n + 4) + i);
+        for (int k = 0; k < 3; ++k) p[2 - k] = cv::saturate_cast<uchar>(255.0f * solidtex::synthesis::linearToSrgbChannel(c[k]) + 0.5f);
+      }
+  const int scale = std::max(1, 256 / n);
+  cv::resize(img, img, cv::Size(), scale, scale, cv::INTER_NEAREST);
+  cv::imwrite(path, img);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  solidtex::SynthesisOptions base;
+  std::vector<std::string> methods{"chen-wang", "kopf"};
+  std::vector<std::string> exemplars;
+  std::string reportDir, slicesDir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() { return std::string(argv[++i]); };
+    if (a == "--size") base.size = std::stoi(next());
+    else if (a == "--methods") methods = split(next());
+    else if (a == "--iterations") base.iterations = std::stoi(next());
+    else if (a == "--threads") base.threads = std::stoi(next());
+    else if (a == "--seed") base.seed = std::stoull(next());
+    else if (a == "--levels") base.levels = std::stoi(next());
+    else if (a == "--neighborhoods") {
+      base.neighborhoods.clear();
+      for (const auto& s : split(next())) base.neighborhoods.push_back(std::stoi(s));
+    } else if (a == "--report-dir") reportDir = next();
+    else if (a == "--slices") slicesDir = next();
+    else if (a == "--no-measure") base.measure = false;
+    else if (a == "--average-choice") base.voteChoice = false;
+    else if (a == "--reference-count") base.histogramReferenceCount = std::stod(next());
+    else if (a == "--index-reference") base.indexReferenceCount = std::stod(next());
+    else if (a == "--radius") base.coherenceRadius = std::stoi(next());
+    else if (a == "--step") base.sparseStep = std::stoi(next());
+    else if (a == "--verbose") base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
+    else exemplars.push_back(a);
+  }
+  std::printf("%-12s %-9s %5s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size", "E_axis", "E_oblique", "coverage", "flatness",
+              "colorTV", "time_s", "peakMiB");
+  for (const auto& path : exemplars) {
+    cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+    if (bgr.empty()) {
+      std::cerr << "cannot read " << path << "\n";
+      return 1;
+    }
+    cv::Mat rgb;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    rgb.convertTo(rgb, CV_32F, 1.0 / 255.0);
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    name = name.substr(0, name.find('.'));
+    for (const auto& m : methods) {
+      solidtex::SynthesisOptions o = base;
+      o.method = solidtex::parseMethod(m);
+      o.exemplarName = name;
+      const auto t0 = std::chrono::steady_clock::now();
+      const solidtex::SynthesisResult r = solidtex::synthesizeSolid(rgb, o);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto& q = r.report.contains("quality") ? r.report["quality"] : nlohmann::json::object();
+      auto get = [&](const char* k) { return q.contains(k) ? q[k].get<double>() : -1.0; };
+      std::printf("%-12s %-9s %5d %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(), m.c_str(), o.size, get("energyAxis"),
+                  get("energyOblique"), get("positionCoverage"), get("positionFlatness"), get("colorHistogramDistance"),
+                  r.report["synthesisSeconds"].get<double>(), r.report["peakMemoryMiB"].get<double>());
+      std::fflush(stdout);
+      (void)seconds;
+      if (!reportDir.empty()) std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json") << r.report.dump(2);
+      if (!slicesDir.empty()) writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
+    }
+  }
+  return 0;
+}

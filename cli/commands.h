@@ -1,0 +1,22 @@
+#pragma once
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "segmentation/analyzeExemplar.h"
+
+namespace solidtex::cli {
+
+/// A subcommand's action, run after parsing succeeded; returns the exit code.
+using Action = std::function<int()>;
+
+/// Each adds its subcommand with its options to `app` and returns what to run when it is chosen.
+Action addAnalyzeCommand(CLI::App& app);
+Action addParticlesCommand(CLI::App& app, const std::string& commandLine);
+Action addCompareCommand(CLI::App& app);
+
+/// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
+void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
+
+} // namespace solidtex::cli

@@ -1,0 +1,53 @@
+#include <exception>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "Version.h"
+#include "cli/commands.h"
+
+namespace {
+
+std::string joinArguments(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+/// One line on stderr, as users' scripts expect from a failing command.
+int fail(const std::string& message, int code) {
+  std::cerr << "solidtex: error: " << message << '\n';
+  return code;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"solidtex: one photo of a material in, a 3D solid texture (OpenVDB) out"};
+  app.set_version_flag("--version", SOLIDTEX_VERSION);
+  app.require_subcommand(1);
+  const std::string commandLine = joinArguments(argc, argv);
+  const std::map<std::string, solidtex::cli::Action> actions = {
+      {"analyze", solidtex::cli::addAnalyzeCommand(app)},
+      {"particles", solidtex::cli::addParticlesCommand(app, commandLine)},
+      {"compare", solidtex::cli::addCompareCommand(app)},
+  };
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see solidtex --help)", 2);
+  }
+  try {
+    return actions.at(app.get_subcommands().front()->get_name())();
+  } catch (const std::exception& e) {
+    return fail(e.what(), 1);
+  }
+}

@@ -1,0 +1,48 @@
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "cli/commands.h"
+#include "pipeline/jobSupport.h"
+#include "pipeline/particleSolidJob.h"
+
+namespace solidtex::cli {
+
+Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
+  auto job = std::make_shared<ParticleSolidJob>();
+  job->commandLine = commandLine;
+  auto size = std::make_shared<int>(128);
+  auto dims = std::make_shared<std::vector<int>>();
+  auto placer = std::make_shared<std::string>("edt");
+  CLI::App* command = app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
+  command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
+  command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
+  auto* sizeOption = command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();
+  command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (instead of --size)")->expected(3)->excludes(sizeOption);
+  command->add_option("--scale", job->voxelsPerPixel,
+                      "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)");
+  command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")->capture_default_str();
+  command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")->capture_default_str();
+  command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused")
+      ->capture_default_str()->check(CLI::Range(1, 4096));
+  command->add_option("--seed", job->seed, "Random seed: same seed, same volume")->capture_default_str();
+  auto threads = std::make_shared<int>(0);
+  command->add_option("--threads", *threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--report", job->report, "Write a JSON report");
+  command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
+  command->add_flag("!--quiet", job->progress, "No progress line");
+  addSegmentationOptions(*command, job->segmentation);
+  return [job, size, dims, placer, threads] {
+    job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
+    job->placer = parsePlacerKind(*placer);
+    const ThreadLimit limit(*threads);
+    const auto report = runParticleSolid(*job);
+    const auto& volume = report["volume"];
+    std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
+              << volume["volume_fraction"].get<double>() << " (photo " << volume["area_fraction"].get<double>()
+              << "), " << volume["stop_reason"].get<std::string>() << '\n';
+    return 0;
+  };
+}
+
+} // namespace solidtex::cli

@@ -1,0 +1,26 @@
+#pragma once
+#include <cstdint>
+#include <random>
+
+namespace solidtex {
+
+/// The one random engine of solidtex; same seed, same sequence on every platform build.
+using Rng = std::mt19937_64;
+
+/// A seed for the stream number `stream` derived from `seed` (splitmix64), so parallel
+/// work gets independent, thread-count-independent streams.
+inline std::uint64_t deriveSeed(std::uint64_t seed, std::uint64_t stream) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (stream + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+/// Uniform double in [0,1) computed from the engine's bits, identical across standard libraries
+/// (std::uniform_real_distribution is not).
+inline double uniform01(Rng& rng) { return double(rng() >> 11) * 0x1.0p-53; }
+
+/// Uniform integer in [0, n), n > 0, identical across standard libraries.
+inline std::uint64_t uniformIndex(Rng& rng, std::uint64_t n) { return std::uint64_t(uniform01(rng) * double(n)); }
+
+} // namespace solidtex

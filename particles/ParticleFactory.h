@@ -1,0 +1,48 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "common/Random.h"
+#include "particles/HullMesh.h"
+#include "particles/VoxelShape.h"
+#include "segmentation/ExemplarStats.h"
+
+namespace solidtex {
+
+struct ParticleOptions {
+  int views = 3;              ///< contours per visual hull (paper: 3 to 5)
+  int shapes = 64;            ///< distinct hulls built up front and reused with fresh sizes and rotations
+  int contourVertices = 48;   ///< contours are simplified to about this many vertices before the CGAL work
+  std::uint64_t seed = 1;
+};
+
+/// A 3D box size picked the paper's hierarchical way (3.5), in photo pixels.
+struct ParticleSize {
+  int width = 0, height = 0, depth = 0;
+  int source = -1;            ///< index into ExemplarStats::particles whose colour and residual it takes (3.6)
+};
+
+/// Makes 3D particles from the photo's contours: visual hulls (3.4), sizes (3.5).
+class ParticleFactory {
+public:
+  /// Builds the pool of unit hulls, in parallel and deterministically for the seed.
+  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options);
+
+  /// Depth for a (width, height) pair: drawn by frequency from the other side of every pair sharing
+  /// width or height with it (paper 3.5); `source` is a particle whose box is (width, height).
+  ParticleSize pickDepth(int width, int height, Rng& rng) const;
+
+  /// A particle whose tight box is (width, height, depth) voxels (each >= 1), from a random pool hull
+  /// under a random rotation, non-uniformly scaled to the box.
+  VoxelShape make(int width, int height, int depth, Rng& rng) const;
+
+  const std::vector<HullMesh>& hulls() const { return hulls_; }
+
+private:
+  const ExemplarStats& stats_;
+  ParticleOptions options_;
+  std::vector<HullMesh> hulls_;
+};
+
+} // namespace solidtex

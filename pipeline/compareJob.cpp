@@ -1,0 +1,77 @@
+#include "pipeline/compareJob.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "common/Error.h"
+#include "pipeline/comparisonPlot.h"
+#include "pipeline/jobSupport.h"
+#include "segmentation/imageIO.h"
+#include "voxel/vdbIO.h"
+
+namespace solidtex {
+namespace {
+
+double scaleOf(const CompareJob& job, const SolidVolume& volume) {
+  if (job.voxelsPerPixel > 0) return job.voxelsPerPixel;
+  const auto it = volume.metadata.find("voxels_per_pixel");
+  if (it == volume.metadata.end())
+    throw InputError(job.volume + " has no voxels_per_pixel metadata: give --scale");
+  return std::stod(it->second);
+}
+
+std::vector<double> particleVolumes(const SolidVolume& volume) {
+  std::vector<double> counts;
+  for (std::int32_t id : volume.particleId) {
+    if (id <= 0) continue;
+    if (std::size_t(id) > counts.size()) counts.resize(std::size_t(id), 0);
+    counts[std::size_t(id - 1)] += 1;
+  }
+  counts.erase(std::remove(counts.begin(), counts.end(), 0.0), counts.end());
+  return counts;
+}
+
+double mean(const std::vector<double>& values) {
+  return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+}
+
+} // namespace
+
+nlohmann::json runCompare(const CompareJob& job) {
+  const cv::Mat photo = loadPhoto(job.photo);
+  const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
+  const SolidVolume volume = readVdb(job.volume);
+  if (volume.particleId.empty()) throw InputError(job.volume + " has no particle_id grid: not a particle solid");
+  const double scale = scaleOf(job, volume);
+
+  std::vector<double> photoAreas;
+  for (const auto& p : stats.particles)
+    if (!p.border) photoAreas.push_back(p.area * scale * scale);
+  const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, job.sections);
+  const std::vector<double> volumes = particleVolumes(volume);
+  std::size_t occupied = 0;
+  for (std::int32_t id : volume.particleId) occupied += id > 0;
+
+  ComparisonData data{photoAreas, sections.areas, stats.histogram.ratios, tenBinRatios(volumes)};
+  const double photoMean = mean(photoAreas);
+  nlohmann::json report = {
+      {"photo", job.photo},
+      {"volume", job.volume},
+      {"voxels_per_pixel", scale},
+      {"area_fraction", stats.areaFraction},
+      {"volume_fraction", double(occupied) / double(volume.dims.count())},
+      {"section_area_fraction", sections.areaFraction},
+      {"area_histogram", stats.histogram.ratios},
+      {"volume_histogram", data.volumeHistogram},
+      {"particles", volumes.size()},
+      {"photo_particles", photoAreas.size()},
+      {"sections", {{"planes", sections.planes}, {"count", sections.areas.size()}, {"mean_area", mean(sections.areas)}}},
+      {"photo_mean_area", photoMean},
+      {"ks", ksStatistic(photoAreas, sections.areas)},
+      {"wasserstein1_over_mean", photoMean > 0 ? wasserstein1(photoAreas, sections.areas) / photoMean : 0.0}};
+  if (job.plot) writeImage(*job.plot, plotComparison(data, report));
+  if (job.report) writeJsonFile(*job.report, report);
+  return report;
+}
+
+} // namespace solidtex

@@ -1,0 +1,26 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "segmentation/analyzeExemplar.h"
+#include "voxel/sectionStatistics.h"
+
+namespace solidtex {
+
+/// `solidtex compare`: how well a particle solid's statistics match its photo.
+struct CompareJob {
+  std::string photo;
+  std::string volume;                  ///< .vdb with a particle_id grid
+  SegmentationOptions segmentation;
+  SectionOptions sections;
+  double voxelsPerPixel = 0;           ///< <= 0: read from the .vdb's metadata
+  std::optional<std::string> report;   ///< JSON
+  std::optional<std::string> plot;     ///< PNG
+};
+
+/// Runs the job, writes the requested files and returns the report.
+nlohmann::json runCompare(const CompareJob& job);
+
+} // namespace solidtex

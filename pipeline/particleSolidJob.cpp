@@ -1,0 +1,132 @@
+#include "pipeline/particleSolidJob.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "common/Error.h"
+#include "pipeline/jobSupport.h"
+#include "placement/placeLargestFirst.h"
+#include "segmentation/imageIO.h"
+#include "segmentation/reportJson.h"
+#include "voxel/paintParticleSolid.h"
+#include "voxel/vdbIO.h"
+#include "voxel/writePreviews.h"
+#include "Version.h"
+
+namespace solidtex {
+namespace {
+
+void checkJob(const ParticleSolidJob& job) {
+  for (int edge : {job.dims.x, job.dims.y, job.dims.z})
+    if (edge < 8 || edge > kMaxVolumeEdge)
+      throw InputError("volume size " + std::to_string(edge) + " is out of range [8, " + std::to_string(kMaxVolumeEdge) + "]");
+  if (job.voxelsPerPixel < 0 || job.voxelsPerPixel > 64)
+    throw InputError("--scale must be in (0, 64] voxels per pixel");
+  if (job.particles.views < 3 || job.particles.views > 5) throw InputError("--views must be 3, 4 or 5");
+  namespace fs = std::filesystem;
+  const fs::path out(job.output);
+  if (out.extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent)) throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+}
+
+int largestBoxSide(const ExemplarStats& stats) {
+  int side = 1;
+  for (const auto& pair : stats.sizePairs) side = std::max({side, pair.width, pair.height});
+  return side;
+}
+
+double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
+  if (job.voxelsPerPixel > 0) return job.voxelsPerPixel;
+  // 1:1 keeps particle shapes as resolved as in the photo, unless particles would be so large
+  // that few fit and the walls dominate the packing.
+  const int smallestEdge = std::min({job.dims.x, job.dims.y, job.dims.z});
+  return std::min(1.0, 0.25 * smallestEdge / largestBoxSide(stats));
+}
+
+std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const ExemplarStats& stats,
+                                              const PlacementResult& placement, double scale) {
+  char fraction[32], voxelsPerPixel[32];
+  std::snprintf(fraction, sizeof fraction, "%.6f", placement.volumeFraction);
+  std::snprintf(voxelsPerPixel, sizeof voxelsPerPixel, "%.9g", scale);
+  return {{"solidtex_version", SOLIDTEX_VERSION},
+          {"command_line", job.commandLine},
+          {"seed", std::to_string(job.seed)},
+          {"exemplar", std::filesystem::path(stats.name).filename().string()},
+          {"volume_fraction", fraction},
+          {"voxels_per_pixel", voxelsPerPixel},
+          {"placer", placerName(job.placer)}};
+}
+
+nlohmann::json placementJson(const PlacementResult& placement, const ExemplarStats& stats, double scale) {
+  return {{"dims", {placement.dims.x, placement.dims.y, placement.dims.z}},
+          {"voxels_per_pixel", scale},
+          {"particles", placement.particles.size()},
+          {"volume_fraction", placement.volumeFraction},
+          {"area_fraction", stats.areaFraction},
+          {"placed_per_bin", placement.placedPerBin},
+          {"rejected_per_bin", placement.rejectedPerBin},
+          {"area_histogram", stats.histogram.ratios},
+          {"volume_histogram", placement.volumeHistogram},
+          {"stop_reason", placement.stopReason}};
+}
+
+} // namespace
+
+nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
+  checkJob(job);
+  PhaseTimer timer;
+  ProgressLine progress(job.progress);
+
+  timer.start("analysis");
+  const cv::Mat photo = loadPhoto(job.photo);
+  const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
+  const double scale = voxelsPerPixel(job, stats);
+
+  timer.start("particle_shapes");
+  ParticleOptions particleOptions = job.particles;
+  particleOptions.seed = job.seed;
+  const ParticleFactory factory(stats, particleOptions);
+
+  timer.start("placement");
+  const float maxRadius = float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * scale) / 2 + 1);
+  auto field = makeSpaciousnessField(job.placer, job.dims, maxRadius);
+  PlacementOptions placementOptions;
+  placementOptions.dims = job.dims;
+  placementOptions.voxelsPerPixel = scale;
+  placementOptions.seed = job.seed;
+  placementOptions.progress = [&](double fraction, int placed) {
+    char line[128];
+    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", placed, fraction,
+                  stats.areaFraction);
+    progress.update(line);
+  };
+  const PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
+  progress.done();
+
+  timer.start("colour");
+  SolidVolume volume = paintParticleSolid(stats, placement, job.seed);
+  volume.metadata = metadataOf(job, stats, placement, scale);
+
+  timer.start("write");
+  writeVdb(job.output, volume);
+  nlohmann::json outputs = {{"vdb", job.output}};
+  if (job.preview) outputs["previews"] = writePreviews(*job.preview, photo, volume);
+
+  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
+                           {"command", "particles"},
+                           {"seed", job.seed},
+                           {"placer", placerName(job.placer)},
+                           {"views", job.particles.views},
+                           {"photo", toJson(stats)},
+                           {"volume", placementJson(placement, stats, scale)},
+                           {"outputs", outputs}};
+  report["time_seconds"] = timer.finish();
+  report["peak_memory_mib"] = peakMemoryMiB();
+  if (job.report) writeJsonFile(*job.report, report);
+  return report;
+}
+
+} // namespace solidtex

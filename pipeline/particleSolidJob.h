@@ -1,0 +1,37 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/Grid.h"
+#include "particles/ParticleFactory.h"
+#include "placement/SpaciousnessField.h"
+#include "segmentation/analyzeExemplar.h"
+
+namespace solidtex {
+
+/// `solidtex particles`: photo to particle solid (.vdb, report, previews).
+struct ParticleSolidJob {
+  std::string photo;
+  std::string output;                   ///< .vdb path
+  SegmentationOptions segmentation;
+  Dims dims{128, 128, 128};
+  double voxelsPerPixel = 0;            ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
+  PlacerKind placer = PlacerKind::Edt;
+  ParticleOptions particles;            ///< its seed is replaced by `seed`
+  std::uint64_t seed = 1;
+  std::optional<std::string> report;
+  std::optional<std::string> preview;   ///< folder for PNGs
+  std::string commandLine;              ///< stored in the .vdb's metadata
+  bool progress = true;
+};
+
+/// The largest edge a volume may have; beyond it memory, not patience, runs out.
+constexpr int kMaxVolumeEdge = 2048;
+
+/// Runs the job, writes the requested files and returns the report.
+nlohmann::json runParticleSolid(const ParticleSolidJob& job);
+
+} // namespace solidtex

@@ -1,0 +1,42 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/Grid.h"
+#include "common/Random.h"
+
+namespace solidtex {
+
+/// How spaciousness is computed (paper 3.7).
+enum class PlacerKind { Discrete, Brute, Edt, Delaunay };
+
+/// "discrete" | "brute" | "edt" | "delaunay"; throws InputError otherwise.
+PlacerKind parsePlacerKind(const std::string& name);
+const char* placerName(PlacerKind kind);
+
+/// Spaciousness of every voxel of a volume: the radius, in voxels, of the largest ball centred at
+/// the voxel's centre that holds no occupied voxel centre. The walls count as occupied layers at
+/// index -1 and N on each axis, so in an empty volume voxel i has min(i+1, N-i) per axis.
+/// Values are capped at the field's maxRadius (the paper's sqrt(3)D/2): nothing larger is ever asked for.
+class SpaciousnessField {
+public:
+  virtual ~SpaciousnessField() = default;
+  virtual PlacerKind kind() const = 0;
+  /// The volume the field covers.
+  virtual Dims dims() const = 0;
+  /// The cap of every value.
+  virtual float maxRadius() const = 0;
+  /// Marks a newly placed particle's voxels (volume coordinates) occupied and updates the field.
+  virtual void insert(const std::vector<Voxel>& voxels) = 0;
+  /// This field's spaciousness of v.
+  virtual float at(const Voxel& v) const = 0;
+  /// Up to maxCount distinct candidate spots whose spaciousness is at least `radius`, the smallest
+  /// spaciousness first (best fit), equal values in an order drawn from rng.
+  virtual std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) = 0;
+};
+
+/// The field of the given kind over an empty volume.
+std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius);
+
+} // namespace solidtex

@@ -1,0 +1,50 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/Grid.h"
+#include "particles/ParticleFactory.h"
+#include "placement/SpaciousnessField.h"
+#include "segmentation/ExemplarStats.h"
+
+namespace solidtex {
+
+struct PlacementOptions {
+  Dims dims{128, 128, 128};
+  double voxelsPerPixel = 1;      ///< photo pixels to voxels
+  std::uint64_t seed = 1;
+  int candidatesPerTry = 32;      ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
+  std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
+};
+
+/// One particle in the volume.
+struct PlacedParticle {
+  int id = 0;                     ///< 1..P, as in the id grid
+  Voxel origin;                   ///< the volume voxel of the shape's local (0,0,0)
+  Dims box;                       ///< the shape's tight box, voxels
+  int source = -1;                ///< index into ExemplarStats::particles (colour, residual)
+  int bin = 0;                    ///< area-histogram bin it was made for
+  std::size_t voxelCount = 0;
+};
+
+struct PlacementResult {
+  Dims dims;
+  std::vector<std::int32_t> ids;  ///< dims.count(), 0 background, 1..P
+  std::vector<PlacedParticle> particles;
+  std::array<int, 10> placedPerBin{};
+  std::array<int, 10> rejectedPerBin{};  ///< (w,h) tries that found no spot
+  double volumeFraction = 0;
+  std::array<double, 10> volumeHistogram{};  ///< ratios of placed particles per bin of volume (paper Fig. 10)
+  std::string stopReason;          ///< "area fraction reached" | "all bins done" | ...
+};
+
+/// Places particles one by one, largest area bin first, each at the best-fit spot of `field`
+/// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached.
+/// Particles never overlap and never cross the walls.
+PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
+                                  SpaciousnessField& field, const PlacementOptions& options);
+
+} // namespace solidtex

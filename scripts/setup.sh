@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs every Debian package solidtex needs. Idempotent: does nothing when all are present.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libopencv-dev
+  libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
+  libcgal-dev libgmp-dev libmpfr-dev
+  libopenimageio-dev openimageio-tools
+  libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
+  libnanoflann-dev
+  libgtest-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,36 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "segmentation/ExemplarStats.h"
+
+namespace solidtex {
+
+/// How the photo is split into particles and background.
+struct SegmentationOptions {
+  std::optional<std::string> maskPath; ///< white = particle; replaces the automatic separation
+  bool invert = false;                 ///< swap what the automatic separation (or the mask) calls particle and background
+  bool split = true;                   ///< split touching particles (distance transform + watershed)
+  double minArea = -1;                 ///< pixels; < 0 means max(8, image area / 10000)
+};
+
+/// Loads any image OpenImageIO reads (PNG, JPEG, TIFF, EXR; 8/16-bit/float; grey/RGB/RGBA) as
+/// CV_32FC3 sRGB in [0,1], R,G,B order. Refuses headers larger than 20000x20000 before decoding.
+/// Throws InputError naming the problem.
+cv::Mat loadPhoto(const std::string& path);
+
+/// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Throws InputError when
+/// no particle is found.
+ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name, const SegmentationOptions& options);
+
+/// loadPhoto + analyzeExemplar.
+ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions& options);
+
+/// sRGB in [0,1] to linear, per channel.
+float srgbToLinear(float c);
+/// Linear in [0,1] to sRGB, per channel.
+float linearToSrgb(float c);
+
+} // namespace solidtex

@@ -1,0 +1,97 @@
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+
+#include "common/Error.h"
+#include "voxel/vdbIO.h"
+
+namespace solidtex {
+namespace {
+
+namespace fs = std::filesystem;
+
+SolidVolume smallParticleVolume() {
+  SolidVolume v;
+  v.dims = {5, 4, 3};
+  v.density.assign(v.dims.count(), 0.f);
+  v.particleId.assign(v.dims.count(), 0);
+  v.color.assign(v.dims.count(), Rgb{0.f, 0.f, 0.f});  // black background must stay active
+  const std::size_t inside = v.dims.index(2, 1, 1);
+  v.density[inside] = 1.f;
+  v.particleId[inside] = 7;
+  v.color[inside] = {0.25f, 0.5f, 0.75f};
+  v.metadata = {{"seed", "42"}, {"exemplar", "disc.png"}};
+  return v;
+}
+
+fs::path tempPath(const std::string& name) { return fs::temp_directory_path() / ("solidtex_voxel_" + name); }
+
+TEST(VdbIO, RoundTripKeepsGridsAndMetadata) {
+  const auto path = tempPath("roundtrip.vdb");
+  const SolidVolume v = smallParticleVolume();
+  writeVdb(path.string(), v);
+  const SolidVolume r = readVdb(path.string());
+  EXPECT_EQ(r.dims, v.dims);
+  EXPECT_EQ(r.density, v.density);
+  EXPECT_EQ(r.particleId, v.particleId);
+  EXPECT_EQ(r.color, v.color);
+  EXPECT_EQ(r.metadata.at("seed"), "42");
+  EXPECT_EQ(r.metadata.at("exemplar"), "disc.png");
+  fs::remove(path);
+}
+
+TEST(VdbIO, FollowsTheOutputConventions) {
+  const auto path = tempPath("conventions.vdb");
+  writeVdb(path.string(), smallParticleVolume(), 0.5);
+  openvdb::initialize();
+  openvdb::io::File file(path.string());
+  file.open();
+  auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
+  auto color = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("color"));
+  auto cd = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("Cd"));
+  auto ids = openvdb::gridPtrCast<openvdb::Int32Grid>(file.readGrid("particle_id"));
+  file.close();
+  ASSERT_TRUE(density && color && cd && ids);
+  EXPECT_EQ(density->getGridClass(), openvdb::GRID_FOG_VOLUME);
+  EXPECT_EQ(density->activeVoxelCount(), 1u);        // 0 and inactive outside particles
+  EXPECT_EQ(color->activeVoxelCount(), 5u * 4 * 3);  // colour over the whole box
+  EXPECT_EQ(cd->activeVoxelCount(), color->activeVoxelCount());
+  EXPECT_EQ(ids->tree().getValue(openvdb::Coord(2, 1, 1)), 7);
+  EXPECT_DOUBLE_EQ(density->voxelSize()[0], 0.5);
+  // Voxel (i,j,k) is centred at world (i,j,k) * voxel size.
+  EXPECT_TRUE(density->indexToWorld(openvdb::Vec3d(2, 1, 1)).eq(openvdb::Vec3d(1.0, 0.5, 0.5)));
+  fs::remove(path);
+}
+
+TEST(VdbIO, ContinuousSolidHasDensityOneEverywhere) {
+  const auto path = tempPath("continuous.vdb");
+  SolidVolume v;
+  v.dims = {4, 4, 4};
+  v.color.assign(v.dims.count(), Rgb{0.1f, 0.2f, 0.3f});
+  writeVdb(path.string(), v);
+  const SolidVolume r = readVdb(path.string());
+  ASSERT_EQ(r.density.size(), v.dims.count());
+  for (float d : r.density) EXPECT_EQ(d, 1.f);
+  fs::remove(path);
+}
+
+TEST(VdbIO, UnwritablePathThrowsAndLeavesNothing) {
+  const fs::path dir = tempPath("missing_folder");
+  fs::remove_all(dir);
+  EXPECT_THROW(writeVdb((dir / "out.vdb").string(), smallParticleVolume()), InputError);
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(VdbIO, ReadingAMissingOrCorruptFileThrows) {
+  EXPECT_THROW(readVdb(tempPath("nope.vdb").string()), InputError);
+  const auto path = tempPath("corrupt.vdb");
+  { std::ofstream(path) << "not a vdb"; }
+  EXPECT_THROW(readVdb(path.string()), InputError);
+  fs::remove(path);
+}
+
+} // namespace
+} // namespace solidtex

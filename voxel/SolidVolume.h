@@ -1,0 +1,26 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/Grid.h"
+
+namespace solidtex {
+
+using Rgb = std::array<float, 3>;
+
+/// A solid texture in dense working form, x fastest (Dims::index). Written to .vdb as DESIGN.md says:
+/// `density` (FloatGrid, fog), `color` and `Cd` (Vec3SGrid, linear RGB, active over the whole box),
+/// `particle_id` (Int32Grid) and `source_position` (Vec3SGrid) when present.
+struct SolidVolume {
+  Dims dims;
+  std::vector<float> density;                 ///< dims.count(); empty means 1 everywhere (continuous solids)
+  std::vector<Rgb> color;                     ///< dims.count(), linear RGB in [0,1]
+  std::vector<std::int32_t> particleId;       ///< dims.count() or empty; 0 background, 1..P particles
+  std::vector<std::array<float, 2>> sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
+  std::map<std::string, std::string> metadata;       ///< file metadata: command line, seed, exemplar, ...
+};
+
+} // namespace solidtex

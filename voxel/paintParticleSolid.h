@@ -1,0 +1,15 @@
+#pragma once
+#include <cstdint>
+
+#include "placement/placeLargestFirst.h"
+#include "segmentation/ExemplarStats.h"
+#include "voxel/SolidVolume.h"
+
+namespace solidtex {
+
+/// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
+/// colour plus that particle's own residual, each background voxel the background mean plus the
+/// background residual. density is 1 on particles, particle_id is the placement's id grid.
+SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement, std::uint64_t seed);
+
+} // namespace solidtex

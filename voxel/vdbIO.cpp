@@ -1,0 +1,149 @@
+#include "voxel/vdbIO.h"
+
+#include <filesystem>
+#include <system_error>
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Dense.h>
+
+#include "common/Error.h"
+
+namespace solidtex {
+namespace {
+
+static_assert(sizeof(Rgb) == sizeof(openvdb::Vec3s), "Rgb must be layout-compatible with Vec3s");
+
+openvdb::CoordBBox boxOf(const Dims& dims) {
+  return openvdb::CoordBBox(openvdb::Coord(0, 0, 0), openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
+}
+
+/// Dense data in our x-fastest layout wrapped for OpenVDB without a copy.
+template <typename VdbValue, typename Value>
+openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> wrap(const Dims& dims, const std::vector<Value>& data) {
+  static_assert(sizeof(VdbValue) == sizeof(Value));
+  return {boxOf(dims), reinterpret_cast<VdbValue*>(const_cast<Value*>(data.data()))};
+}
+
+template <typename GridT, typename Value>
+typename GridT::Ptr sparseFrom(const Dims& dims, const std::vector<Value>& data,
+                               const typename GridT::ValueType& tolerance, const std::string& name,
+                               const openvdb::math::Transform::Ptr& xform) {
+  auto grid = GridT::create(typename GridT::ValueType(openvdb::zeroVal<typename GridT::ValueType>()));
+  openvdb::tools::copyFromDense(wrap<typename GridT::ValueType>(dims, data), *grid, tolerance);
+  grid->setName(name);
+  grid->setTransform(xform);
+  return grid;
+}
+
+openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::math::Transform::Ptr& xform) {
+  openvdb::FloatGrid::Ptr grid;
+  if (volume.density.empty()) {
+    grid = openvdb::FloatGrid::create(0.f);
+    grid->denseFill(boxOf(volume.dims), 1.f, true);
+    grid->setName("density");
+    grid->setTransform(xform);
+  } else {
+    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, 0.f, "density", xform);
+  }
+  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+  return grid;
+}
+
+openvdb::GridPtrVec gridsOf(const SolidVolume& volume, double voxelSize) {
+  auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
+  openvdb::GridPtrVec grids;
+  grids.push_back(densityGrid(volume, xform));
+  // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
+  auto color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+  color->setVectorType(openvdb::VEC_INVARIANT);
+  grids.push_back(color);
+  auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
+  cd->setName("Cd");
+  grids.push_back(cd);
+  if (!volume.particleId.empty())
+    grids.push_back(sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform));
+  if (!volume.sourcePosition.empty()) {
+    std::vector<Rgb> positions(volume.sourcePosition.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
+    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f), "source_position", xform));
+  }
+  return grids;
+}
+
+} // namespace
+
+void writeVdb(const std::string& path, const SolidVolume& volume, double voxelSize) {
+  openvdb::initialize();
+  if (volume.color.size() != volume.dims.count())
+    throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
+  openvdb::MetaMap meta;
+  for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
+  try {
+    openvdb::io::File file(temp.string());
+    file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    file.write(gridsOf(volume, voxelSize), meta);
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw InputError("cannot write " + path + ": " + e.what());
+  }
+  std::error_code ec;
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    throw InputError("cannot write " + path + ": " + ec.message());
+  }
+}
+
+namespace {
+
+template <typename GridT, typename Value>
+void denseFrom(const openvdb::GridBase::Ptr& base, const Dims& dims, std::vector<Value>& out) {
+  auto grid = openvdb::gridPtrCast<GridT>(base);
+  if (!grid) return;
+  out.assign(dims.count(), Value{});
+  openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(boxOf(dims),
+      reinterpret_cast<typename GridT::ValueType*>(out.data()));
+  openvdb::tools::copyToDense(*grid, dense);
+}
+
+} // namespace
+
+SolidVolume readVdb(const std::string& path) {
+  openvdb::initialize();
+  if (!std::filesystem::exists(path)) throw InputError("cannot read " + path + ": no such file");
+  openvdb::io::File file(path);
+  openvdb::GridPtrVecPtr grids;
+  openvdb::MetaMap::Ptr meta;
+  try {
+    file.open();
+    grids = file.getGrids();
+    meta = file.getMetadata();
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    throw InputError("cannot read " + path + ": " + e.what());
+  }
+  SolidVolume volume;
+  openvdb::CoordBBox box;
+  for (const auto& grid : *grids)
+    if (grid->getName() == "density" || grid->getName() == "color") box.expand(grid->evalActiveVoxelBoundingBox());
+  if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid");
+  if (box.min() != openvdb::Coord(0)) throw InputError("cannot read " + path + ": the volume does not start at voxel (0,0,0)");
+  volume.dims = {box.max().x() + 1, box.max().y() + 1, box.max().z() + 1};
+  for (const auto& grid : *grids) {
+    const auto& name = grid->getName();
+    if (name == "density") denseFrom<openvdb::FloatGrid>(grid, volume.dims, volume.density);
+    else if (name == "color") denseFrom<openvdb::Vec3SGrid>(grid, volume.dims, volume.color);
+    else if (name == "particle_id") denseFrom<openvdb::Int32Grid>(grid, volume.dims, volume.particleId);
+  }
+  for (auto it = meta->beginMeta(); it != meta->endMeta(); ++it) volume.metadata[it->first] = it->second->str();
+  return volume;
+}
+
+} // namespace solidtex
