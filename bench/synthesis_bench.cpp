@@ -67,7 +67,11 @@ int main(int argc, char** argv) {
     } else if (a == "--report-dir") reportDir = next();
     else if (a == "--slices") slicesDir = next();
     else if (a == "--no-measure") base.measure = false;
-    else if (a == "--average-choice") base.voteChoice = false;
+    else if (a == "--choice") {
+      const std::string c = next();
+      using C = solidtex::synthesis::DiscreteSolveSettings::Choice;
+      base.choice = c == "average" ? C::NearestToAverage : c == "vote" ? C::LargestVote : C::ColourMode;
+    } else if (a == "--bandwidth") base.modeBandwidth = std::stod(next());
     else if (a == "--reference-count") base.histogramReferenceCount = std::stod(next());
     else if (a == "--index-reference") base.indexReferenceCount = std::stod(next());
     else if (a == "--radius") base.coherenceRadius = std::stoi(next());

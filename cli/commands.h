@@ -15,6 +15,7 @@ using Action = std::function<int()>;
 Action addAnalyzeCommand(CLI::App& app);
 Action addParticlesCommand(CLI::App& app, const std::string& commandLine);
 Action addCompareCommand(CLI::App& app);
+Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);

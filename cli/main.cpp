@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
       {"analyze", solidtex::cli::addAnalyzeCommand(app)},
       {"particles", solidtex::cli::addParticlesCommand(app, commandLine)},
       {"compare", solidtex::cli::addCompareCommand(app)},
+      {"synthesize", solidtex::cli::addSynthesizeCommand(app, commandLine)},
   };
   try {
     app.parse(argc, argv);

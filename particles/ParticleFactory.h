@@ -26,15 +26,22 @@ struct ParticleSize {
 /// Makes 3D particles from the photo's contours: visual hulls (3.4), sizes (3.5).
 class ParticleFactory {
 public:
-  /// Builds the pool of unit hulls, in parallel and deterministically for the seed.
+  /// Builds the pool of unit hulls, in parallel and deterministically for the seed (identical at any
+  /// thread count). Contours of particles cut by the photo's border are used only when there are no
+  /// others. Keeps a reference to `stats`. Throws InputError for options out of range or a photo
+  /// whose contours carve no hull.
   ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options);
 
   /// Depth for a (width, height) pair: drawn by frequency from the other side of every pair sharing
   /// width or height with it (paper 3.5); `source` is a particle whose box is (width, height).
+  /// A pair equal to (width, height) offers both its values, each with half its count. Sizes that no
+  /// pair shares a value with draw from all sides of all pairs; `source` is then the non-border
+  /// particle with the nearest box (|dw| + |dh|), random among equals.
   ParticleSize pickDepth(int width, int height, Rng& rng) const;
 
   /// A particle whose tight box is (width, height, depth) voxels (each >= 1), from a random pool hull
-  /// under a random rotation, non-uniformly scaled to the box.
+  /// under a random rotation, non-uniformly scaled to the box; one 6-connected piece. Thread-safe.
+  /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
   VoxelShape make(int width, int height, int depth, Rng& rng) const;
 
   const std::vector<HullMesh>& hulls() const { return hulls_; }

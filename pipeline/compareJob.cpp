@@ -47,7 +47,9 @@ nlohmann::json runCompare(const CompareJob& job) {
   std::vector<double> photoAreas;
   for (const auto& p : stats.particles)
     if (!p.border) photoAreas.push_back(p.area * scale * scale);
-  const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, job.sections);
+  SectionOptions sectionOptions = job.sections;
+  sectionOptions.minArea = stats.minArea * scale * scale;
+  const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
   const std::vector<double> volumes = particleVolumes(volume);
   std::size_t occupied = 0;
   for (std::int32_t id : volume.particleId) occupied += id > 0;

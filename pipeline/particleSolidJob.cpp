@@ -107,7 +107,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.done();
 
   timer.start("colour");
-  SolidVolume volume = paintParticleSolid(stats, placement, job.seed);
+  SolidVolume volume = paintParticleSolid(stats, placement, scale, job.seed);
   volume.metadata = metadataOf(job, stats, placement, scale);
 
   timer.start("write");

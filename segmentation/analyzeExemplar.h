@@ -21,8 +21,11 @@ struct SegmentationOptions {
 /// Throws InputError naming the problem.
 cv::Mat loadPhoto(const std::string& path);
 
-/// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Throws InputError when
-/// no particle is found.
+/// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Automatic separation:
+/// Otsu on the clearest of L*, a*, b*, chroma; the less compact class is the background; then the
+/// colour distance from the background (lighting evened out), with edges deciding the unclear
+/// pixels. A particle is everything inside its outer outline (holes filled). Deterministic.
+/// Throws InputError when no particle is found.
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name, const SegmentationOptions& options);
 
 /// loadPhoto + analyzeExemplar.

@@ -1,7 +1,11 @@
 #include "voxel/paintParticleSolid.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include <Eigen/Geometry>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/photo.hpp>
 #include <tbb/parallel_for.h>
 
 #include "common/Random.h"
@@ -13,32 +17,44 @@ Rgb clamp01(const cv::Vec3f& c) {
   return {std::clamp(c[0], 0.f, 1.f), std::clamp(c[1], 0.f, 1.f), std::clamp(c[2], 0.f, 1.f)};
 }
 
-/// How a particle's 2D residual is laid into its 3D box: projected along one of its local axes,
-/// chosen per particle, so no global direction is favoured.
-struct ResidualProjection {
-  int uAxis = 0, vAxis = 1;
+/// A parallel projection onto a plane, scaled from voxels to photo pixels.
+struct Projection {
+  Eigen::Vector3d u, v;
 };
 
-cv::Vec3f residualAt(const Particle2D& source, const PlacedParticle& placed, const ResidualProjection& proj,
-                     const int local[3]) {
-  const int extent[3] = {placed.box.x, placed.box.y, placed.box.z};
-  const int c = std::min(source.residual.cols - 1, local[proj.uAxis] * source.residual.cols / std::max(1, extent[proj.uAxis]));
-  const int r = std::min(source.residual.rows - 1, local[proj.vAxis] * source.residual.rows / std::max(1, extent[proj.vAxis]));
-  // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
-  return source.residual.at<cv::Vec3f>(r, c);
+Projection randomProjection(Rng& rng, double pixelsPerVoxel) {
+  Eigen::Vector3d d;
+  do d = {2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1};
+  while (d.squaredNorm() > 1 || d.squaredNorm() < 1e-3);
+  d.normalize();
+  const Eigen::Vector3d helper = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d u = d.cross(helper).normalized();
+  return {u * pixelsPerVoxel, d.cross(u) * pixelsPerVoxel};
 }
 
-/// Background residual for a voxel: each z-slice shows the photo's background residual under its
-/// own random shift, so axis-z slices carry the photo's background grain.
-cv::Vec3f backgroundResidualAt(const ExemplarStats& stats, const std::vector<cv::Point>& shifts, int x, int y, int z) {
-  const cv::Mat& res = stats.backgroundResidual;
-  const cv::Point s = shifts[std::size_t(z)];
-  return res.at<cv::Vec3f>((y + s.y) % res.rows, (x + s.x) % res.cols);
+/// The background residual with the particles (and their shadow rims) filled in from around them,
+/// so the tiled background carries no ghost outlines of the photo's particles.
+cv::Mat fillParticleHoles(const ExemplarStats& stats) {
+  cv::Mat holes;
+  cv::bitwise_not(stats.backgroundMask, holes);
+  cv::dilate(holes, holes, cv::getStructuringElement(cv::MORPH_ELLIPSE, {11, 11}));
+  std::vector<cv::Mat> channels;
+  cv::split(stats.backgroundResidual, channels);
+  for (auto& c : channels) cv::inpaint(c, holes, c, 3, cv::INPAINT_TELEA);
+  cv::Mat filled;
+  cv::merge(channels, filled);
+  return filled;
+}
+
+int wrap(double x, int n) {
+  const int i = int(std::floor(x)) % n;
+  return i < 0 ? i + n : i;
 }
 
 } // namespace
 
-SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement, std::uint64_t seed) {
+SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement,
+                               double voxelsPerPixel, std::uint64_t seed) {
   SolidVolume volume;
   const Dims dims = placement.dims;
   volume.dims = dims;
@@ -46,32 +62,38 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult
   volume.density.assign(dims.count(), 0.f);
   volume.color.resize(dims.count());
 
+  const double pixelsPerVoxel = 1.0 / voxelsPerPixel;
   Rng rng(deriveSeed(seed, 0xC0102));
-  std::vector<cv::Point> shifts(std::size_t(dims.z));
-  for (auto& s : shifts)
-    s = {int(uniformIndex(rng, std::uint64_t(stats.backgroundResidual.cols))),
-         int(uniformIndex(rng, std::uint64_t(stats.backgroundResidual.rows)))};
-  std::vector<ResidualProjection> projections(placement.particles.size());
-  for (auto& p : projections) {
-    const int skip = int(uniformIndex(rng, 3));  // the axis projected along
-    p.uAxis = skip == 0 ? 1 : 0;
-    p.vAxis = skip == 2 ? 1 : 2;
-  }
+  const Projection background = randomProjection(rng, pixelsPerVoxel);
+  std::vector<Projection> projections;
+  projections.reserve(placement.particles.size());
+  for (std::size_t i = 0; i < placement.particles.size(); ++i) projections.push_back(randomProjection(rng, pixelsPerVoxel));
+  const cv::Mat backgroundResidual = fillParticleHoles(stats);
 
   tbb::parallel_for(0, dims.z, [&](int z) {
     for (int y = 0; y < dims.y; ++y)
       for (int x = 0; x < dims.x; ++x) {
         const std::size_t idx = dims.index(x, y, z);
         const std::int32_t id = placement.ids[idx];
+        const Eigen::Vector3d p(x, y, z);
         if (id == 0) {
-          volume.color[idx] = clamp01(stats.backgroundColor + backgroundResidualAt(stats, shifts, x, y, z));
+          const cv::Vec3f r = backgroundResidual.at<cv::Vec3f>(wrap(p.dot(background.v), backgroundResidual.rows),
+                                                               wrap(p.dot(background.u), backgroundResidual.cols));
+          volume.color[idx] = clamp01(stats.backgroundColor + r);
           continue;
         }
         const PlacedParticle& placed = placement.particles[std::size_t(id - 1)];
         const Particle2D& source = stats.particles[std::size_t(placed.source)];
-        const int local[3] = {x - placed.origin.x, y - placed.origin.y, z - placed.origin.z};
+        const Projection& proj = projections[std::size_t(id - 1)];
+        // Project about the particle's centre onto the centre of its photo particle's box.
+        const Eigen::Vector3d centre(placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
+                                     placed.origin.z + placed.box.z * 0.5);
+        const Eigen::Vector3d local = p - centre;
+        const int c = std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
+        const int r = std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
         volume.density[idx] = 1.f;
-        volume.color[idx] = clamp01(source.color + residualAt(source, placed, projections[std::size_t(id - 1)], local));
+        // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
+        volume.color[idx] = clamp01(source.color + source.residual.at<cv::Vec3f>(r, c));
       }
   });
   return volume;

@@ -9,7 +9,10 @@ namespace solidtex {
 
 /// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
 /// colour plus that particle's own residual, each background voxel the background mean plus the
-/// background residual. density is 1 on particles, particle_id is the placement's id grid.
-SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement, std::uint64_t seed);
+/// background residual. Residuals are laid into 3D by parallel projection along an oblique
+/// direction (random per particle), so no axis slice shows them smeared into streaks.
+/// density is 1 on particles, particle_id is the placement's id grid.
+SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement,
+                               double voxelsPerPixel, std::uint64_t seed);
 
 } // namespace solidtex

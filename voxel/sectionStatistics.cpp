@@ -16,10 +16,13 @@ struct PlaneSections {
   std::size_t particlePixels = 0, pixels = 0;
 };
 
-/// Labels 4-connected runs of equal non-zero ids by flood fill; one reused stack, no per-pixel allocation.
-PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, int height) {
+// Pixels of a plane's window that fall outside the volume.
+constexpr std::int32_t kOutside = -1;
+
+/// Labels 8-connected runs of equal particle ids by flood fill; one reused stack, no per-pixel allocation.
+PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, int height, double minArea) {
   PlaneSections out;
-  out.pixels = image.size();
+  out.pixels = std::size_t(std::count_if(image.begin(), image.end(), [](std::int32_t id) { return id != kOutside; }));
   std::vector<std::uint8_t> seen(image.size(), 0);
   std::vector<int> stack;
   for (int start = 0; start < int(image.size()); ++start) {
@@ -34,11 +37,15 @@ PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, in
       stack.pop_back();
       ++area;
       const int x = p % width, y = p / width;
-      edge |= x == 0 || y == 0 || x == width - 1 || y == height - 1;
-      const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+      const int neighbours[8][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1},
+                                     {x - 1, y - 1}, {x + 1, y - 1}, {x - 1, y + 1}, {x + 1, y + 1}};
       for (const auto& [nx, ny] : neighbours) {
-        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height) {
+          edge = true;
+          continue;
+        }
         const int q = ny * width + nx;
+        edge |= image[std::size_t(q)] == kOutside;
         if (!seen[std::size_t(q)] && image[std::size_t(q)] == id) {
           seen[std::size_t(q)] = 1;
           stack.push_back(q);
@@ -46,9 +53,20 @@ PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, in
       }
     }
     out.particlePixels += area;
-    if (!edge) out.areas.push_back(double(area));
+    if (!edge && double(area) >= minArea) out.areas.push_back(double(area));
   }
   return out;
+}
+
+/// The square window of the plane through `through` with this normal that covers the plane's whole
+/// intersection with the volume: an inscribed window would cut the larger sections more often and
+/// bias the areas small.
+SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const Eigen::Vector3d& through) {
+  SlicePlane plane = obliquePlane(dims, normal, through);
+  const int side = int(std::ceil(std::sqrt(double(dims.x) * dims.x + double(dims.y) * dims.y + double(dims.z) * dims.z))) + 1;
+  plane.width = plane.height = side;
+  plane.origin = through - (side - 1) * 0.5 * (plane.u + plane.v);
+  return plane;
 }
 
 /// A uniformly distributed direction: rejection sampling in the unit ball, then normalised.
@@ -73,7 +91,7 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
     const Eigen::Vector3d normal = randomDirection(rng);
     // Off-centre planes along the normal sample particles at every depth, not only the middle.
     const Eigen::Vector3d through = centre + (2 * uniform01(rng) - 1) * spread * normal;
-    planes.push_back(obliquePlane(dims, normal, through));
+    planes.push_back(coveringPlane(dims, normal, through));
   }
   return planes;
 }
@@ -85,7 +103,7 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
   std::vector<PlaneSections> perPlane(planes.size());
   tbb::parallel_for(std::size_t(0), planes.size(), [&](std::size_t i) {
     const SlicePlane& plane = planes[i];
-    perPlane[i] = measurePlane(slice(dims, ids, plane, std::int32_t(0)), plane.width, plane.height);
+    perPlane[i] = measurePlane(slice(dims, ids, plane, kOutside), plane.width, plane.height, options.minArea);
   });
   SectionStatistics stats;
   std::size_t particlePixels = 0, pixels = 0;

@@ -19,18 +19,20 @@ std::vector<std::int32_t> sphereVolume(const Dims& dims, double radius) {
   return ids;
 }
 
-// Planes at a uniform distance h in [0, r] from a sphere's centre cut discs of area pi (r^2 - h^2),
-// on average (2/3) pi r^2.
-TEST(SectionStatistics, SphereSectionsAverageTwoThirdsOfTheEquator) {
+// Planes at a uniform distance h in [0, r] from a sphere's centre cut discs of area pi (r^2 - h^2).
+// Those of at least area a0 have h <= h0 = sqrt(r^2 - a0/pi), on average pi (r^2 - h0^2/3).
+TEST(SectionStatistics, SphereSectionsHaveTheExactMeanArea) {
   const Dims dims{64, 64, 64};
   const double r = 12;
   SectionOptions options;
   options.offsetsPerAxis = 64;
   options.obliquePlanes = 600;
+  options.minArea = 20;
   const SectionStatistics s = sampleSections(dims, sphereVolume(dims, r), options);
   ASSERT_GT(s.areas.size(), 300u);
   const double mean = std::accumulate(s.areas.begin(), s.areas.end(), 0.0) / double(s.areas.size());
-  EXPECT_NEAR(mean / (2.0 / 3.0 * std::numbers::pi * r * r), 1.0, 0.05);
+  const double h0Squared = r * r - options.minArea / std::numbers::pi;
+  EXPECT_NEAR(mean / (std::numbers::pi * (r * r - h0Squared / 3)), 1.0, 0.05);
   for (double a : s.areas) EXPECT_LE(a, std::numbers::pi * (r + 1) * (r + 1));
 }
 

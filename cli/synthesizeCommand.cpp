@@ -1,0 +1,39 @@
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "pipeline/synthesizeJob.h"
+
+namespace solidtex::cli {
+
+Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
+  auto job = std::make_shared<SynthesizeJob>();
+  job->commandLine = commandLine;
+  auto method = std::make_shared<std::string>("chen-wang");
+  SynthesisOptions& o = job->synthesis;
+  CLI::App* command = app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
+  command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR)")->required();
+  command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
+  command->add_option("--method", *method, "chen-wang (histogram matching) or kopf (baseline)")->capture_default_str();
+  command->add_option("--size", o.size, "Edge of the cubic volume in voxels")->capture_default_str()->check(CLI::Range(8, 1024));
+  command->add_option("--levels", o.levels, "Multi-resolution levels")->capture_default_str()->check(CLI::Range(1, 8));
+  command->add_option("--neighborhoods", o.neighborhoods, "Neighbourhood side per level, coarsest first")
+      ->delimiter(',')->capture_default_str();
+  command->add_option("--k", o.k, "k-coherence similarity set size")->capture_default_str()->check(CLI::Range(1, 64));
+  command->add_option("--iterations", o.iterations, "Iterations per level")->capture_default_str()->check(CLI::Range(1, 100));
+  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods")->capture_default_str()->check(CLI::Range(1, 512));
+  command->add_option("--control", job->control, "Greyscale map the exemplar's size: brighter appears more")->check(CLI::ExistingFile);
+  command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
+  command->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--report", job->report, "Write a JSON report");
+  command->add_option("--preview", job->preview, "Folder for preview PNGs");
+  command->add_flag("!--quiet", job->progress, "No progress line");
+  return [job, method] {
+    job->synthesis.method = parseMethod(*method);
+    runSynthesize(*job);
+    std::cout << job->output << ": " << job->synthesis.size << "^3 voxels by " << *method << '\n';
+    return 0;
+  };
+}
+
+} // namespace solidtex::cli

@@ -1,0 +1,163 @@
+#include "particles/ParticleFactory.h"
+
+#include <algorithm>
+#include <climits>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <opencv2/imgproc.hpp>
+#include <tbb/parallel_for.h>
+
+#include "common/Error.h"
+#include "particles/rotation.h"
+#include "particles/visualHull.h"
+#include "particles/voxelizeHull.h"
+
+namespace solidtex {
+namespace {
+
+constexpr int kAttemptsPerHull = 32;
+// A hull this small (share of its local cube) comes from contours that barely overlap: draw again.
+constexpr double kMinHullVolume = 0.01;
+
+void checkRange(const char* name, int value, int lo, int hi) {
+  if (value < lo || value > hi)
+    throw InputError(std::string("particle option ") + name + " must be in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got " + std::to_string(value));
+}
+
+void checkOptions(const ParticleOptions& options) {
+  checkRange("views", options.views, 1, 16);
+  checkRange("shapes", options.shapes, 1, 100000);
+  checkRange("contourVertices", options.contourVertices, 3, 10000);
+}
+
+// Particles whose contours carve the hulls; those cut by the photo's border only when there is no other.
+std::vector<int> contourSources(const ExemplarStats& stats) {
+  std::vector<int> inner, all;
+  for (int i = 0; i < int(stats.particles.size()); ++i) {
+    const Particle2D& p = stats.particles[std::size_t(i)];
+    if (p.contour.size() < 3) continue;
+    const cv::Rect box = cv::boundingRect(p.contour);
+    if (box.width < 2 || box.height < 2) continue;
+    all.push_back(i);
+    if (!p.border) inner.push_back(i);
+  }
+  if (all.empty()) throw InputError("no particle contour of the photo encloses an area: cannot build particle shapes");
+  return inner.empty() ? all : inner;
+}
+
+std::optional<HullMesh> tryHull(const ExemplarStats& stats, const std::vector<int>& sources,
+                                const ParticleOptions& options, Rng& rng) {
+  std::vector<Silhouette> views(std::size_t(options.views));
+  for (Silhouette& view : views) {
+    const int source = sources[uniformIndex(rng, sources.size())];
+    view.polygon = normalizeContour(stats.particles[std::size_t(source)].contour, options.contourVertices);
+    view.rotation = randomRotation(rng);
+  }
+  HullMesh hull = visualHull(views);
+  if (hull.volume() < kMinHullVolume) return std::nullopt;
+  return hull;
+}
+
+HullMesh buildHull(const ExemplarStats& stats, const std::vector<int>& sources, const ParticleOptions& options,
+                   int index) {
+  Rng rng(deriveSeed(options.seed, std::uint64_t(index)));
+  for (int attempt = 0; attempt < kAttemptsPerHull; ++attempt)
+    if (std::optional<HullMesh> hull = tryHull(stats, sources, options, rng)) return std::move(*hull);
+  throw InputError("the photo's particle contours do not overlap enough to carve 3D particle shapes");
+}
+
+// Values with weights; drawWeighted picks one with probability proportional to its weight.
+using Weighted = std::vector<std::pair<int, long>>;
+
+int drawWeighted(const Weighted& candidates, Rng& rng) {
+  long total = 0;
+  for (const auto& [value, weight] : candidates) total += weight;
+  auto draw = long(uniformIndex(rng, std::uint64_t(total)));
+  for (const auto& [value, weight] : candidates) {
+    if (draw < weight) return value;
+    draw -= weight;
+  }
+  return candidates.back().first;
+}
+
+// The paper's second level (3.5): every pair sharing a value with (width, height), in either slot,
+// offers its other value. A pair sharing both values offers each with half its count, so weights are
+// doubled counts.
+Weighted depthCandidates(const std::vector<SizePair>& pairs, int width, int height) {
+  Weighted out;
+  for (const SizePair& p : pairs) {
+    const bool sharesWidth = p.width == width || p.width == height;
+    const bool sharesHeight = p.height == width || p.height == height;
+    if (sharesWidth && sharesHeight) {
+      out.emplace_back(p.width, p.count);
+      out.emplace_back(p.height, p.count);
+    } else if (sharesWidth) {
+      out.emplace_back(p.height, 2L * p.count);
+    } else if (sharesHeight) {
+      out.emplace_back(p.width, 2L * p.count);
+    }
+  }
+  return out;
+}
+
+// A (width, height) that no photo pair shares a value with takes a side of any pair, by frequency.
+Weighted anySide(const std::vector<SizePair>& pairs) {
+  Weighted out;
+  for (const SizePair& p : pairs) {
+    out.emplace_back(p.width, p.count);
+    out.emplace_back(p.height, p.count);
+  }
+  return out;
+}
+
+int drawDepth(const std::vector<SizePair>& pairs, int width, int height, Rng& rng) {
+  Weighted candidates = depthCandidates(pairs, width, height);
+  if (candidates.empty()) candidates = anySide(pairs);
+  if (candidates.empty()) return (width + height + 1) / 2;
+  return drawWeighted(candidates, rng);
+}
+
+// A non-border particle (any particle when all touch the border) whose box is nearest to
+// (width, height) in |dw| + |dh|, which is 0 for the photo's own pairs; random among equals.
+int drawSource(const std::vector<Particle2D>& particles, int width, int height, Rng& rng) {
+  const bool anyInner = std::any_of(particles.begin(), particles.end(), [](const Particle2D& p) { return !p.border; });
+  int best = INT_MAX;
+  std::vector<int> ties;
+  for (int i = 0; i < int(particles.size()); ++i) {
+    const Particle2D& p = particles[std::size_t(i)];
+    if (anyInner && p.border) continue;
+    const int distance = std::abs(p.box.width - width) + std::abs(p.box.height - height);
+    if (distance < best) ties.clear();
+    if (distance <= best) {
+      best = distance;
+      ties.push_back(i);
+    }
+  }
+  return ties.empty() ? -1 : ties[uniformIndex(rng, ties.size())];
+}
+
+} // namespace
+
+ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options)
+    : stats_(stats), options_(options) {
+  checkOptions(options);
+  const std::vector<int> sources = contourSources(stats);
+  hulls_.resize(std::size_t(options.shapes));
+  tbb::parallel_for(0, options.shapes, [&](int i) { hulls_[std::size_t(i)] = buildHull(stats, sources, options, i); });
+}
+
+ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {
+  const int depth = drawDepth(stats_.sizePairs, width, height, rng);
+  return {width, height, depth, drawSource(stats_.particles, width, height, rng)};
+}
+
+VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) const {
+  const HullMesh& hull = hulls_[uniformIndex(rng, hulls_.size())];
+  return voxelize(hull, randomRotation(rng), width, height, depth);
+}
+
+} // namespace solidtex

@@ -1,0 +1,277 @@
+#include "particles/voxelizeHull.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace solidtex {
+namespace {
+
+// Vertices snap to 1/65536 voxel: with sides up to kMaxParticleSide every orientation below is an
+// exact int64 product (at most 2^61), so shared edges split the rows consistently.
+constexpr double kGrid = 65536.0;
+constexpr std::int64_t kHalf = 32768;
+
+struct GridPoint {
+  std::int64_t x, y, z;
+};
+
+// A ray along +x through the centres of voxel row `row` meets the surface at x (voxel units).
+struct Crossing {
+  double x;
+  std::uint32_t row;
+  std::int32_t enter;  // +1 into the hull, -1 out of it
+};
+
+void checkSides(int w, int h, int d) {
+  for (const int side : {w, h, d})
+    if (side < 1 || side > kMaxParticleSide)
+      throw std::invalid_argument("voxelize: box side " + std::to_string(side) + " is outside [1, " +
+                                  std::to_string(kMaxParticleSide) + "]");
+}
+
+// Turned, then scaled per axis so that the hull's box is exactly [0,w] x [0,h] x [0,d] (voxel units).
+std::vector<Eigen::Vector3d> placeInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation, const Dims& dims) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(hull.vertices.size());
+  for (const Eigen::Vector3d& v : hull.vertices) points.push_back(rotation * v);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Eigen::Vector3d& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Eigen::Vector3d extent = hi - lo;
+  if (hull.triangles.empty() || !extent.allFinite() || extent.minCoeff() <= 0)
+    throw std::invalid_argument("voxelize: the hull is empty or flat");
+  const Eigen::Vector3d scale = Eigen::Vector3d(dims.x, dims.y, dims.z).cwiseQuotient(extent);
+  for (Eigen::Vector3d& p : points) p = (p - lo).cwiseProduct(scale);
+  return points;
+}
+
+GridPoint snap(const Eigen::Vector3d& p) {
+  return {std::llround(p.x() * kGrid), std::llround(p.y() * kGrid), std::llround(p.z() * kGrid)};
+}
+
+// Side of the row centre (py,pz) from edge a->b in the (y,z) plane. The centre is nudged by
+// (eps, eps^2) for an infinitesimal eps (simulation of simplicity), so it is never on an edge and the
+// triangles around it count it exactly once.
+int side(const GridPoint& a, const GridPoint& b, std::int64_t py, std::int64_t pz) {
+  const std::int64_t dy = b.y - a.y, dz = b.z - a.z;
+  const std::int64_t o = dy * (pz - a.z) - dz * (py - a.y);
+  if (o != 0) return o > 0 ? 1 : -1;
+  if (dz != 0) return dz < 0 ? 1 : -1;
+  return dy > 0 ? 1 : -1;
+}
+
+// Row centres j + 0.5 within [lo, hi] (grid units), clamped to the box.
+std::array<int, 2> rowRange(std::int64_t lo, std::int64_t hi, int count) {
+  const int first = int(std::ceil(double(lo - kHalf) / kGrid));
+  const int last = int(std::floor(double(hi - kHalf) / kGrid));
+  return {std::max(first, 0), std::min(last, count - 1)};
+}
+
+void addCrossings(const GridPoint& a, const GridPoint& b, const GridPoint& c, const Dims& dims,
+                  std::vector<Crossing>& out) {
+  const std::int64_t normalX = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
+  if (normalX == 0) return;  // edge-on to every row
+  const int orientation = normalX > 0 ? 1 : -1;
+  const double ab[3] = {double(b.x - a.x), double(b.y - a.y), double(b.z - a.z)};
+  const double ac[3] = {double(c.x - a.x), double(c.y - a.y), double(c.z - a.z)};
+  const double normalY = ab[2] * ac[0] - ab[0] * ac[2], normalZ = ab[0] * ac[1] - ab[1] * ac[0];
+  const auto [j0, j1] = rowRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), dims.y);
+  const auto [k0, k1] = rowRange(std::min({a.z, b.z, c.z}), std::max({a.z, b.z, c.z}), dims.z);
+  for (int k = k0; k <= k1; ++k) {
+    const std::int64_t pz = k * std::int64_t(kGrid) + kHalf;
+    for (int j = j0; j <= j1; ++j) {
+      const std::int64_t py = j * std::int64_t(kGrid) + kHalf;
+      if (side(a, b, py, pz) != orientation || side(b, c, py, pz) != orientation || side(c, a, py, pz) != orientation)
+        continue;
+      const double x = double(a.x) - (normalY * double(py - a.y) + normalZ * double(pz - a.z)) / double(normalX);
+      out.push_back({x / kGrid, std::uint32_t(k * dims.y + j), -orientation});
+    }
+  }
+}
+
+// Crossings grouped by row (counting sort), each row in x order.
+std::vector<Crossing> byRow(const std::vector<Crossing>& crossings, std::vector<std::size_t>& rowStart) {
+  std::fill(rowStart.begin(), rowStart.end(), 0);
+  for (const Crossing& c : crossings) ++rowStart[c.row + 1];
+  std::partial_sum(rowStart.begin(), rowStart.end(), rowStart.begin());
+  std::vector<Crossing> sorted(crossings.size());
+  std::vector<std::size_t> next(rowStart.begin(), rowStart.end() - 1);
+  for (const Crossing& c : crossings) sorted[next[c.row]++] = c;
+  for (std::size_t row = 0; row + 1 < rowStart.size(); ++row)
+    std::sort(sorted.begin() + std::ptrdiff_t(rowStart[row]), sorted.begin() + std::ptrdiff_t(rowStart[row + 1]),
+              [](const Crossing& a, const Crossing& b) { return a.x != b.x ? a.x < b.x : a.enter < b.enter; });
+  return sorted;
+}
+
+// Voxel centres with a positive winding number: the crossings left of a centre add up to it.
+std::vector<std::uint8_t> fillRows(const std::vector<Crossing>& crossings, const Dims& dims) {
+  std::vector<std::size_t> rowStart(std::size_t(dims.y) * std::size_t(dims.z) + 1);
+  const std::vector<Crossing> sorted = byRow(crossings, rowStart);
+  std::vector<std::uint8_t> inside(dims.count(), 0);
+  for (std::size_t row = 0; row + 1 < rowStart.size(); ++row) {
+    std::size_t c = rowStart[row];
+    int winding = 0;
+    for (int i = 0; i < dims.x && c < rowStart[row + 1]; ++i) {
+      for (; c < rowStart[row + 1] && sorted[c].x < i + 0.5; ++c) winding += sorted[c].enter;
+      inside[row * std::size_t(dims.x) + std::size_t(i)] = winding > 0;
+    }
+  }
+  return inside;
+}
+
+// A run of particle voxels [begin, end) along x in row (j, k).
+struct Run {
+  int j, k, begin, end;
+};
+
+std::vector<Run> runsOf(const VoxelShape& shape) {
+  std::vector<Run> runs;
+  for (int k = 0; k < shape.dims.z; ++k)
+    for (int j = 0; j < shape.dims.y; ++j) {
+      const std::uint8_t* row = &shape.inside[shape.dims.index(0, j, k)];
+      for (int i = 0; i < shape.dims.x;) {
+        if (!row[i]) {
+          ++i;
+          continue;
+        }
+        const int begin = i;
+        while (i < shape.dims.x && row[i]) ++i;
+        runs.push_back({j, k, begin, i});
+      }
+    }
+  return runs;
+}
+
+int findRoot(std::vector<int>& parent, int r) {
+  while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
+  return r;
+}
+
+// Joins each run with the overlapping runs of the rows below it in y and in z (6-connectivity).
+std::vector<int> joinRuns(const std::vector<Run>& runs, const Dims& dims) {
+  std::vector<std::size_t> rowStart(std::size_t(dims.y) * std::size_t(dims.z) + 1, runs.size());
+  for (std::size_t r = runs.size(); r-- > 0;) rowStart[std::size_t(runs[r].k) * std::size_t(dims.y) + std::size_t(runs[r].j)] = r;
+  for (std::size_t row = rowStart.size() - 1; row-- > 0;) rowStart[row] = std::min(rowStart[row], rowStart[row + 1]);
+  std::vector<int> parent(runs.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const Run& run = runs[r];
+    for (const auto& [j, k] : {std::array{run.j - 1, run.k}, std::array{run.j, run.k - 1}}) {
+      if (j < 0 || k < 0) continue;
+      const std::size_t row = std::size_t(k) * std::size_t(dims.y) + std::size_t(j);
+      for (std::size_t q = rowStart[row]; q < rowStart[row + 1]; ++q)
+        if (runs[q].begin < run.end && run.begin < runs[q].end)
+          parent[std::size_t(findRoot(parent, int(q)))] = findRoot(parent, int(r));
+    }
+  }
+  return parent;
+}
+
+// Thin parts can fall apart between voxel centres; the largest 6-connected piece (first on ties) stays.
+void keepLargestPiece(VoxelShape& shape) {
+  const std::vector<Run> runs = runsOf(shape);
+  std::vector<int> parent = joinRuns(runs, shape.dims);
+  std::vector<long> size(runs.size(), 0);
+  for (std::size_t r = 0; r < runs.size(); ++r) size[std::size_t(findRoot(parent, int(r)))] += runs[r].end - runs[r].begin;
+  const auto best = int(std::max_element(size.begin(), size.end()) - size.begin());
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    if (findRoot(parent, int(r)) != best)
+      std::fill_n(&shape.inside[shape.dims.index(runs[r].begin, runs[r].j, runs[r].k)], runs[r].end - runs[r].begin, 0);
+}
+
+using Coord = std::array<int, 3>;
+
+Coord sizeOf(const Dims& dims) { return {dims.x, dims.y, dims.z}; }
+
+bool isInside(const VoxelShape& shape, const Coord& c) { return shape.inside[shape.dims.index(c[0], c[1], c[2])] != 0; }
+
+// Occupied extent per axis: lo[axis], hi[axis].
+std::array<Coord, 2> occupiedBox(const VoxelShape& shape) {
+  Coord lo = sizeOf(shape.dims), hi{-1, -1, -1}, c{};
+  for (c[2] = 0; c[2] < shape.dims.z; ++c[2])
+    for (c[1] = 0; c[1] < shape.dims.y; ++c[1])
+      for (c[0] = 0; c[0] < shape.dims.x; ++c[0])
+        if (isInside(shape, c))
+          for (std::size_t a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], c[a]);
+            hi[a] = std::max(hi[a], c[a]);
+          }
+  return {lo, hi};
+}
+
+// The occupied voxel of layer `layer` on `axis` whose centre is nearest to `target` across the axis.
+Coord nearestInLayer(const VoxelShape& shape, std::size_t axis, int layer, const Eigen::Vector3d& target) {
+  const Coord size = sizeOf(shape.dims);
+  const std::size_t a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  Coord c{}, best{};
+  c[axis] = layer;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (c[a2] = 0; c[a2] < size[a2]; ++c[a2])
+    for (c[a1] = 0; c[a1] < size[a1]; ++c[a1]) {
+      const double d1 = c[a1] + 0.5 - target[Eigen::Index(a1)], d2 = c[a2] + 0.5 - target[Eigen::Index(a2)];
+      if (isInside(shape, c) && d1 * d1 + d2 * d2 < bestDistance) {
+        bestDistance = d1 * d1 + d2 * d2;
+        best = c;
+      }
+    }
+  return best;
+}
+
+// No voxel centre reached the low or high face of `axis`: a one-voxel-wide spike from the nearest voxel
+// of the outermost occupied layer runs to it, towards the hull's extreme point on that face.
+void spikeToFace(VoxelShape& shape, const std::vector<Eigen::Vector3d>& points, std::size_t axis, bool high, int layer) {
+  const int face = high ? sizeOf(shape.dims)[axis] - 1 : 0;
+  if (layer == face) return;
+  const auto a = Eigen::Index(axis);
+  const auto extreme = std::min_element(points.begin(), points.end(), [&](const auto& p, const auto& q) {
+    return high ? p[a] > q[a] : p[a] < q[a];
+  });
+  Coord c = nearestInLayer(shape, axis, layer, *extreme);
+  for (const int step = high ? 1 : -1; c[axis] != face;) {
+    c[axis] += step;
+    shape.inside[shape.dims.index(c[0], c[1], c[2])] = 1;
+  }
+}
+
+// Makes the occupied box exactly the requested one. Spikes along one axis stay inside the occupied
+// range of the others, so the extents measured once remain valid.
+void reachBoxFaces(VoxelShape& shape, const std::vector<Eigen::Vector3d>& points) {
+  auto [lo, hi] = occupiedBox(shape);
+  if (hi[0] < 0) {
+    lo = hi = {shape.dims.x / 2, shape.dims.y / 2, shape.dims.z / 2};
+    shape.inside[shape.dims.index(lo[0], lo[1], lo[2])] = 1;
+  }
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    spikeToFace(shape, points, axis, false, lo[axis]);
+    spikeToFace(shape, points, axis, true, hi[axis]);
+  }
+}
+
+} // namespace
+
+VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d) {
+  checkSides(w, h, d);
+  VoxelShape shape;
+  shape.dims = {w, h, d};
+  const std::vector<Eigen::Vector3d> points = placeInBox(hull, rotation, shape.dims);
+  std::vector<GridPoint> grid(points.size());
+  std::transform(points.begin(), points.end(), grid.begin(), snap);
+  std::vector<Crossing> crossings;
+  crossings.reserve(std::size_t(2) * std::size_t(h) * std::size_t(d));
+  for (const auto& [a, b, c] : hull.triangles)
+    addCrossings(grid[std::size_t(a)], grid[std::size_t(b)], grid[std::size_t(c)], shape.dims, crossings);
+  shape.inside = fillRows(crossings, shape.dims);
+  keepLargestPiece(shape);
+  reachBoxFaces(shape, points);
+  return shape;
+}
+
+} // namespace solidtex

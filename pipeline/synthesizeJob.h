@@ -1,0 +1,26 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "synthesis/SynthesisOptions.h"
+
+namespace solidtex {
+
+/// `solidtex synthesize`: an exemplar without particles to a continuous solid (.vdb, report, previews).
+struct SynthesizeJob {
+  std::string exemplar;
+  std::string output;                  ///< .vdb path
+  SynthesisOptions synthesis;          ///< its control map is loaded from `control`
+  std::optional<std::string> control;  ///< greyscale PNG the exemplar's size
+  std::optional<std::string> report;
+  std::optional<std::string> preview;  ///< folder for PNGs
+  std::string commandLine;
+  bool progress = true;                ///< a progress line on stderr
+};
+
+/// Runs the job, writes the requested files and returns the report.
+nlohmann::json runSynthesize(const SynthesizeJob& job);
+
+} // namespace solidtex

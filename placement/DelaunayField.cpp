@@ -1,0 +1,273 @@
+// Delaunay spaciousness (paper 3.7): a 3D Delaunay triangulation of the particles' boundary voxels
+// and of samples of the walls. Every finite cell's circumsphere is empty, so its circumcentre,
+// rounded to a voxel, is a candidate spot; the candidates are bucketed by value and a cell's
+// candidate is dropped as soon as an insertion destroys the cell (find_conflicts + insert_in_hole
+// tell exactly which cells die). The only CGAL translation unit of placement/.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_3.h>
+#include <CGAL/spatial_sort.h>
+
+#include "placement/detail/fieldFactories.h"
+#include "placement/detail/voxelSets.h"
+
+namespace solidtex::detail {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+/// Where a cell's candidate sits in the buckets (bucket 0: it has none), and whether the cell was
+/// created during the insertion under way and has not been looked at yet.
+struct QueueSlot {
+  std::uint32_t bucket = 0;
+  std::uint32_t pos = 0;
+  bool pending = false;
+};
+
+using CellBase = CGAL::Triangulation_cell_base_with_info_3<QueueSlot, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>, CellBase, CGAL::Sequential_tag>;
+using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+using Cell = Delaunay::Cell_handle;
+using Vertex = Delaunay::Vertex_handle;
+
+// Wall samples every kWallSpacing voxels. Between four samples h apart an empty sphere of radius r can
+// bulge through the wall by about h^2 / (4 r): with h = 2 that is under 1/r voxel, so the spots of
+// the balls that matter (r of a few voxels and more) stay where the exact walls would put them, and
+// every value is capped by the exact wall distance anyway. The walls then cost 6 (N/2)^2 points,
+// a few percent of the particles' boundary voxels.
+constexpr int kWallSpacing = 2;
+// Candidate values are kept in 1/16-voxel steps (rounded down, so they stay lower bounds): equal
+// steps are ties, drawn in random order, and the buckets stay few.
+constexpr double kSteps = 16;
+// Hint cells for point location and nearest-vertex queries come from the latest vertex in the same
+// block of this many voxels, so walks stay short.
+constexpr int kHintBlock = 8;
+
+Point pointOf(const Voxel& v) { return {double(v.x), double(v.y), double(v.z)}; }
+
+// -1, -1+h, ..., n: the wall sample coordinates along one axis, ends included.
+std::vector<int> wallSamples(int n) {
+  std::vector<int> samples;
+  for (int c = -1; c < n; c += kWallSpacing) samples.push_back(c);
+  samples.push_back(n);
+  return samples;
+}
+
+std::vector<Point> wallPoints(Dims dims) {
+  const std::array<std::vector<int>, 3> samples{wallSamples(dims.x), wallSamples(dims.y), wallSamples(dims.z)};
+  const std::array<int, 3> size{dims.x, dims.y, dims.z};
+  std::vector<std::array<int, 3>> points;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    for (int layer : {-1, size[std::size_t(axis)]})
+      for (int a : samples[std::size_t(u)])
+        for (int b : samples[std::size_t(w)]) {
+          std::array<int, 3> p{};
+          p[std::size_t(axis)] = layer;
+          p[std::size_t(u)] = a;
+          p[std::size_t(w)] = b;
+          points.push_back(p);
+        }
+  }
+  std::sort(points.begin(), points.end());  // edges and corners are shared by two or three faces
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<Point> out;
+  out.reserve(points.size());
+  for (const auto& p : points) out.emplace_back(p[0], p[1], p[2]);
+  return out;
+}
+
+class DelaunayField final : public SpaciousnessField {
+public:
+  DelaunayField(Dims dims, float maxRadius)
+      : dims_(dims), maxRadius_(maxRadius), capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
+        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64),
+        hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
+                    (dims.z + kHintBlock - 1) / kHintBlock},
+        hints_(hintBlocks_.count()) {
+    const std::vector<Point> walls = wallPoints(dims);
+    triangulation_.insert(walls.begin(), walls.end());
+    for (auto v = triangulation_.finite_vertices_begin(); v != triangulation_.finite_vertices_end(); ++v)
+      rememberHint(v);
+    for (auto c = triangulation_.finite_cells_begin(); c != triangulation_.finite_cells_end(); ++c) addCandidate(c);
+  }
+
+  PlacerKind kind() const override { return PlacerKind::Delaunay; }
+  Dims dims() const override { return dims_; }
+  float maxRadius() const override { return maxRadius_; }
+
+  void insert(const std::vector<Voxel>& voxels) override {
+    checkInside(dims_, voxels);
+    for (const Voxel& v : voxels) {
+      const std::size_t i = dims_.index(v);
+      occupied_[i / 64] |= std::uint64_t(1) << (i % 64);
+    }
+    std::vector<Point> points;
+    for (const Voxel& v : boundaryVoxels(voxels)) points.push_back(pointOf(v));
+    CGAL::spatial_sort(points.begin(), points.end(), Kernel());
+    Cell hint = points.empty() ? Cell() : hintCell(points.front());
+    pending_.clear();
+    for (const Point& p : points) {
+      const Vertex v = insertPoint(p, hint);
+      rememberHint(v);
+      hint = v->cell();
+    }
+    addPendingCandidates();
+  }
+
+  float at(const Voxel& v) const override {
+    checkInside(dims_, v);
+    if (isOccupied(dims_.index(v))) return 0;
+    const Point p = pointOf(v);
+    const Vertex nearest = triangulation_.nearest_vertex(p, hintCell(p));
+    const double d = std::sqrt(CGAL::squared_distance(p, nearest->point()));
+    return float(std::min({d, double(wallDistance(dims_, v.x, v.y, v.z)), double(maxRadius_)}));
+  }
+
+  std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
+    std::vector<Voxel> spots;
+    const double first = std::max(1.0, std::ceil(double(radius) * kSteps));
+    for (std::size_t k = std::size_t(std::min(first, double(capKey_) + 1)); k <= capKey_; ++k) {
+      std::vector<Entry>& bucket = buckets_[k];
+      std::size_t taken = 0;
+      while (int(spots.size()) < maxCount && taken < bucket.size()) {
+        const std::size_t j = taken + std::size_t(uniformIndex(rng, bucket.size() - taken));
+        const Voxel spot = dims_.voxel(bucket[j].spot);
+        if (isOccupied(bucket[j].spot)) {  // a particle covered the spot without destroying the cell
+          dropCandidate(bucket[j].cell);
+          continue;
+        }
+        swapEntries(bucket, taken++, j);
+        if (std::find(spots.begin(), spots.end(), spot) == spots.end()) spots.push_back(spot);
+      }
+      if (int(spots.size()) >= maxCount) break;
+    }
+    return spots;
+  }
+
+private:
+  struct Entry {
+    Cell cell;
+    VoxelIndex spot;
+  };
+
+  bool isOccupied(std::size_t i) const { return (occupied_[i / 64] >> (i % 64)) & 1; }
+
+  std::size_t hintIndex(const Point& p) const {
+    const auto block = [](double c, int blocks) {
+      return std::clamp(int(std::floor(c)) / kHintBlock, 0, blocks - 1);
+    };
+    return hintBlocks_.index(block(p.x(), hintBlocks_.x), block(p.y(), hintBlocks_.y), block(p.z(), hintBlocks_.z));
+  }
+
+  void rememberHint(Vertex v) {
+    hints_[hintIndex(v->point())] = v;
+    latest_ = v;
+  }
+
+  Cell hintCell(const Point& p) const {
+    const Vertex v = hints_[hintIndex(p)];
+    return v != Vertex() ? v->cell() : latest_->cell();
+  }
+
+  // Bowyer-Watson by hand so that the destroyed cells are known: their candidates go. The new cells
+  // (the star of the new vertex) are only noted: most die again while the rest of the particle's
+  // boundary goes in, so their candidates are computed once the particle is complete.
+  Vertex insertPoint(const Point& p, Cell hint) {
+    Delaunay::Locate_type type;
+    int li = 0, lj = 0;
+    const Cell located = triangulation_.locate(p, type, li, lj, hint);
+    if (type == Delaunay::VERTEX) return located->vertex(li);
+    facets_.clear();
+    conflicts_.clear();
+    triangulation_.find_conflicts(p, located, std::back_inserter(facets_), std::back_inserter(conflicts_));
+    for (Cell c : conflicts_) {
+      dropCandidate(c);
+      c->info().pending = false;
+    }
+    const Vertex v = triangulation_.insert_in_hole(p, conflicts_.begin(), conflicts_.end(), facets_.front().first,
+                                                   facets_.front().second);
+    const std::size_t before = pending_.size();
+    triangulation_.incident_cells(v, std::back_inserter(pending_));
+    for (std::size_t i = before; i < pending_.size(); ++i) pending_[i]->info().pending = true;
+    return v;
+  }
+
+  // A noted cell may have died since (its slot then is free, or reused by a later new cell, noted
+  // again: the pending flag makes each count once).
+  void addPendingCandidates() {
+    const auto& cells = triangulation_.tds().cells();
+    for (Cell c : pending_) {
+      if (!cells.is_used(c) || !c->info().pending) continue;
+      c->info().pending = false;
+      if (!triangulation_.is_infinite(c)) addCandidate(c);
+    }
+  }
+
+  // The ball around the rounded circumcentre that fits in the circumsphere holds no boundary voxel,
+  // hence (see boundaryVoxels) no occupied voxel, as long as the spot itself is empty. The paper
+  // subtracts 1 for the rounding; the offset itself (at most sqrt(3)/2) is the exact amount.
+  void addCandidate(Cell c) {
+    const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                            c->vertex(3)->point());
+    const auto inside = [](double x, int n) { return x >= -0.5 && x < n - 0.5; };
+    if (!inside(centre.x(), dims_.x) || !inside(centre.y(), dims_.y) || !inside(centre.z(), dims_.z)) return;
+    const auto round = [](double x) { return int(std::floor(x + 0.5)); };  // lround(-0.5) would leave the volume
+    const Voxel spot{round(centre.x()), round(centre.y()), round(centre.z())};
+    const std::size_t index = dims_.index(spot);
+    if (isOccupied(index)) return;
+    const double radius = std::sqrt(CGAL::squared_distance(centre, c->vertex(0)->point()));
+    const double offset = std::sqrt(CGAL::squared_distance(centre, pointOf(spot)));
+    const double value = std::min({radius - offset, double(wallDistance(dims_, spot.x, spot.y, spot.z)),
+                                   double(maxRadius_)});
+    const double key = std::floor(value * kSteps);
+    if (key < 1) return;
+    std::vector<Entry>& bucket = buckets_[std::size_t(key)];
+    c->info() = {std::uint32_t(key), std::uint32_t(bucket.size()), false};
+    bucket.push_back({c, VoxelIndex(index)});
+  }
+
+  void dropCandidate(Cell c) {
+    const QueueSlot slot = c->info();
+    if (slot.bucket == 0) return;
+    std::vector<Entry>& bucket = buckets_[slot.bucket];
+    bucket[slot.pos] = bucket.back();
+    bucket[slot.pos].cell->info().pos = slot.pos;
+    bucket.pop_back();
+    c->info().bucket = 0;
+  }
+
+  static void swapEntries(std::vector<Entry>& bucket, std::size_t a, std::size_t b) {
+    std::swap(bucket[a], bucket[b]);
+    bucket[a].cell->info().pos = std::uint32_t(a);
+    bucket[b].cell->info().pos = std::uint32_t(b);
+  }
+
+  Dims dims_;
+  float maxRadius_;
+  std::uint32_t capKey_;
+  Delaunay triangulation_;
+  std::vector<std::vector<Entry>> buckets_;  ///< bucket k: candidates of value k / kSteps
+  std::vector<std::uint64_t> occupied_;      ///< one bit per voxel
+  Dims hintBlocks_;
+  std::vector<Vertex> hints_;
+  Vertex latest_;
+  std::vector<Delaunay::Facet> facets_;
+  std::vector<Cell> conflicts_, pending_;
+};
+
+} // namespace
+
+std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius) {
+  return std::make_unique<DelaunayField>(dims, maxRadius);
+}
+
+} // namespace solidtex::detail

@@ -1,0 +1,87 @@
+#pragma once
+// Internal: the part shared by the fields that keep a value for every voxel (discrete, brute, edt).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "placement/SpaciousnessField.h"
+#include "placement/detail/BucketQueue.h"
+#include "placement/detail/voxelSets.h"
+
+namespace solidtex::detail {
+
+/// Stores an integer key per voxel; values_[key] is the spaciousness it stands for (non-decreasing
+/// in the key, values_[0] = 0 for occupied voxels, the last key is the cap).
+template <class Key>
+class BucketField : public SpaciousnessField {
+public:
+  Dims dims() const override { return dims_; }
+  float maxRadius() const override { return values_.back(); }
+
+  float at(const Voxel& v) const override {
+    checkInside(dims_, v);
+    return values_[queue_.key(index(v))];
+  }
+
+  std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
+    const auto first = std::lower_bound(values_.begin() + 1, values_.end(), radius);
+    if (first == values_.end() || maxCount <= 0) return {};
+    std::vector<VoxelIndex> picked;
+    queue_.sample(std::size_t(first - values_.begin()), std::size_t(maxCount), rng, picked);
+    std::vector<Voxel> spots;
+    spots.reserve(picked.size());
+    for (VoxelIndex v : picked) spots.push_back(dims_.voxel(v));
+    return spots;
+  }
+
+  std::size_t bytes() const { return queue_.bytes() + values_.capacity() * sizeof(float); }
+
+protected:
+  /// keyOfWall(d): the key of a voxel whose nearest wall layer is d voxels away (before the cap).
+  template <class KeyOfWall>
+  BucketField(Dims dims, std::vector<float> values, KeyOfWall keyOfWall)
+      : dims_(dims), values_(std::move(values)), queue_(initialKeys(dims, capKey(), keyOfWall), capKey()) {}
+
+  VoxelIndex index(const Voxel& v) const { return VoxelIndex(dims_.index(v)); }
+  Key capKey() const { return Key(values_.size() - 1); }
+
+  /// Marks the voxels occupied (key 0).
+  void occupy(const std::vector<Voxel>& voxels) {
+    for (const Voxel& v : voxels)
+      if (queue_.key(index(v)) != 0) queue_.lower(index(v), 0);
+  }
+
+  Dims dims_;
+  std::vector<float> values_;
+  BucketQueue<Key> queue_;
+
+private:
+  template <class KeyOfWall>
+  static std::vector<Key> initialKeys(Dims dims, Key cap, KeyOfWall keyOfWall) {
+    std::vector<Key> keys(dims.count());
+    tbb::parallel_for(0, dims.z, [&](int k) {
+      for (int j = 0; j < dims.y; ++j)
+        for (int i = 0; i < dims.x; ++i)
+          keys[dims.index(i, j, k)] = Key(std::min<std::uint64_t>(keyOfWall(wallDistance(dims, i, j, k)), cap));
+    });
+    return keys;
+  }
+};
+
+/// The narrowest unsigned type that holds keys up to maxKey.
+template <template <class> class Field, class... Args>
+std::unique_ptr<SpaciousnessField> makeWithNarrowestKey(std::uint64_t maxKey, Args&&... args) {
+  if (maxKey <= std::numeric_limits<std::uint8_t>::max()) return std::make_unique<Field<std::uint8_t>>(args...);
+  if (maxKey <= std::numeric_limits<std::uint16_t>::max()) return std::make_unique<Field<std::uint16_t>>(args...);
+  return std::make_unique<Field<std::uint32_t>>(args...);
+}
+
+/// Values for squared-distance keys: sqrt(key), the last key (ceil(maxRadius^2)) standing for maxRadius.
+std::vector<float> squaredDistanceValues(float maxRadius);
+
+} // namespace solidtex::detail

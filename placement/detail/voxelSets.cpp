@@ -1,0 +1,60 @@
+#include "placement/detail/voxelSets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "common/Error.h"
+
+namespace solidtex::detail {
+
+void checkFieldArguments(Dims dims, float maxRadius) {
+  if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0)
+    throw InputError("spaciousness field: volume dimensions must be positive, got " + std::to_string(dims.x) + "x" +
+                     std::to_string(dims.y) + "x" + std::to_string(dims.z));
+  if (dims.count() >= std::size_t(std::numeric_limits<VoxelIndex>::max()))
+    throw InputError("spaciousness field: volume of " + std::to_string(dims.count()) +
+                     " voxels is too large (at most 2^32 - 1)");
+  if (!(maxRadius > 0) || !std::isfinite(maxRadius))
+    throw InputError("spaciousness field: maxRadius must be positive and finite, got " + std::to_string(maxRadius));
+}
+
+void checkInside(Dims dims, const Voxel& v) {
+  if (!dims.contains(v.x, v.y, v.z))
+    throw std::out_of_range("voxel (" + std::to_string(v.x) + "," + std::to_string(v.y) + "," + std::to_string(v.z) +
+                            ") lies outside the volume");
+}
+
+void checkInside(Dims dims, const std::vector<Voxel>& voxels) {
+  for (const Voxel& v : voxels) checkInside(dims, v);
+}
+
+VoxelBox boundingBox(const std::vector<Voxel>& voxels) {
+  VoxelBox box{voxels.front(), voxels.front()};
+  for (const Voxel& v : voxels) {
+    box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
+    box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
+  }
+  return box;
+}
+
+std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
+  if (voxels.empty()) return {};
+  const VoxelBox box = boundingBox(voxels);
+  const Dims local{box.hi.x - box.lo.x + 1, box.hi.y - box.lo.y + 1, box.hi.z - box.lo.z + 1};
+  std::vector<std::uint8_t> inside(local.count());
+  for (const Voxel& v : voxels) inside[local.index(v.x - box.lo.x, v.y - box.lo.y, v.z - box.lo.z)] = 1;
+  const auto in = [&](int i, int j, int k) { return local.contains(i, j, k) && inside[local.index(i, j, k)] != 0; };
+  std::vector<Voxel> out;
+  for (const Voxel& v : voxels) {
+    const int i = v.x - box.lo.x, j = v.y - box.lo.y, k = v.z - box.lo.z;
+    if (!(in(i - 1, j, k) && in(i + 1, j, k) && in(i, j - 1, k) && in(i, j + 1, k) && in(i, j, k - 1) &&
+          in(i, j, k + 1)))
+      out.push_back(v);
+  }
+  return out;
+}
+
+} // namespace solidtex::detail

@@ -1,0 +1,230 @@
+// Paper 3.8: particles are made and placed one by one, largest area bin first, at best-fit spots of
+// the spaciousness field, until the volume fraction reaches the photo's area fraction.
+#include "placement/placeLargestFirst.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+#include "common/Error.h"
+#include "placement/detail/shapeFit.h"
+
+namespace solidtex {
+namespace {
+
+constexpr int kBins = 10;
+constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
+// Radii asked of the field per shape, evenly from the spaciousness the shape needs at least (its
+// inner radius) to the one with which it surely fits (its outer radius): the tightest spots are
+// tried first, as best fit wants, but an irregular shape that fits none of them still finds room.
+constexpr int kRadiusSteps = 4;
+constexpr int kProgressEvery = 64;
+
+using BinPairs = std::array<std::vector<SizePair>, kBins>;
+
+// The (width, height) pairs of each area bin with their counts, from the particles the histogram
+// counts (not cut by the photo's border); from all particles when every one is cut.
+BinPairs pairsPerBin(const ExemplarStats& stats) {
+  const bool anyInner =
+      std::any_of(stats.particles.begin(), stats.particles.end(), [](const Particle2D& p) { return !p.border; });
+  std::array<std::map<std::pair<int, int>, int>, kBins> counts;
+  for (const Particle2D& p : stats.particles)
+    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0)
+      ++counts[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height}];
+  BinPairs pairs;
+  for (int b = 0; b < kBins; ++b)
+    for (const auto& [size, count] : counts[std::size_t(b)])
+      pairs[std::size_t(b)].push_back({size.first, size.second, count});
+  return pairs;
+}
+
+std::size_t drawByCount(const std::vector<SizePair>& pairs, Rng& rng) {
+  long total = 0;
+  for (const SizePair& p : pairs) total += p.count;
+  auto draw = long(uniformIndex(rng, std::uint64_t(total)));
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (draw < pairs[i].count) return i;
+    draw -= pairs[i].count;
+  }
+  return pairs.size() - 1;
+}
+
+void checkOptions(const PlacementOptions& options, const SpaciousnessField& field) {
+  if (!(options.voxelsPerPixel > 0) || !std::isfinite(options.voxelsPerPixel))
+    throw InputError("placement: voxels per pixel must be positive, got " + std::to_string(options.voxelsPerPixel));
+  if (options.candidatesPerTry < 1)
+    throw InputError("placement: candidates per try must be at least 1, got " +
+                     std::to_string(options.candidatesPerTry));
+  if (!(options.dims == field.dims()))
+    throw std::invalid_argument("placement: the options' dims differ from the spaciousness field's");
+}
+
+class Placer {
+public:
+  Placer(const ExemplarStats& stats, const ParticleFactory& factory, SpaciousnessField& field,
+         const PlacementOptions& options)
+      : stats_(stats), factory_(factory), field_(field), options_(options), pairs_(pairsPerBin(stats)),
+        rng_(deriveSeed(options.seed, kPlacementStream)) {
+    long total = 0;
+    for (const auto& bin : pairs_)
+      for (const SizePair& p : bin) total += p.count;
+    if (total == 0) throw InputError("placement: the photo has no particle to take sizes from");
+    for (int b = 0; b < kBins; ++b) {
+      long count = 0;
+      double boxVolume = 0;
+      for (const SizePair& p : pairs_[std::size_t(b)]) {
+        count += p.count;
+        boxVolume += p.count * boxGuess(p);
+      }
+      ratio_[std::size_t(b)] = double(count) / double(total);
+      open_[std::size_t(b)] = count > 0;
+      boxGuess_[std::size_t(b)] = count > 0 ? boxVolume / double(count) : 0;
+    }
+    result_.dims = options.dims;
+    result_.ids.assign(options.dims.count(), 0);
+    targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(options.dims.count()));
+  }
+
+  PlacementResult run() {
+    if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
+    for (;;) {
+      for (int b = kBins - 1; b >= 0; --b) {
+        while (open_[std::size_t(b)] && !fractionReached() && result_.placedPerBin[std::size_t(b)] < quota(b))
+          if (!attempt(b)) open_[std::size_t(b)] = false;
+        if (fractionReached()) return finish("area fraction reached");
+      }
+      if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
+        char reason[96];
+        std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
+                      stats_.areaFraction);
+        return finish(reason);
+      }
+    }
+  }
+
+private:
+  double scaled(int pixels) const { return std::max(1.0, std::round(pixels * options_.voxelsPerPixel)); }
+  // A particle's box before its depth is known: the depth is drawn from the other pairs' sides.
+  double boxGuess(const SizePair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
+  double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
+  bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
+
+  // Expected voxels of a particle of bin b: the mean of the shapes made for it so far, or its box
+  // guess times the share of their boxes that shapes fill so far (about half before any is made).
+  double expectedVolume(int b) const {
+    if (made_[std::size_t(b)] > 0) return madeVoxels_[std::size_t(b)] / made_[std::size_t(b)];
+    const double fill = madeBoxVoxels_ > 0 ? madeTotalVoxels_ / madeBoxVoxels_ : 0.5;
+    return std::max(1.0, boxGuess_[std::size_t(b)] * fill);
+  }
+
+  // The count of bin b the volume should reach: with T particles in all, bin b holds ratio_b T, and T
+  // is chosen so that the open bins' missing particles fill the missing volume.
+  int quota(int b) const {
+    double missing = targetVoxels_ - double(placedVoxels_), perParticle = 0;
+    for (int i = 0; i < kBins; ++i)
+      if (open_[std::size_t(i)]) {
+        missing += result_.placedPerBin[std::size_t(i)] * expectedVolume(i);
+        perParticle += ratio_[std::size_t(i)] * expectedVolume(i);
+      }
+    return int(std::ceil(ratio_[std::size_t(b)] * missing / perParticle - 1e-9));
+  }
+
+  // Pairs of the bin in random order, weighted by count, until one is placed; false when none fits.
+  bool attempt(int bin) {
+    std::vector<SizePair> remaining = pairs_[std::size_t(bin)];
+    while (!remaining.empty()) {
+      const std::size_t i = drawByCount(remaining, rng_);
+      const SizePair pair = remaining[i];
+      remaining.erase(remaining.begin() + std::ptrdiff_t(i));
+      if (tryPair(pair, bin)) return true;
+      ++result_.rejectedPerBin[std::size_t(bin)];
+    }
+    return false;
+  }
+
+  bool tryPair(const SizePair& pair, int bin) {
+    const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng_);
+    const int w = int(scaled(size.width)), h = int(scaled(size.height)), d = int(scaled(size.depth));
+    const VoxelShape shape = factory_.make(w, h, d, rng_);
+    const std::size_t voxels = shape.voxelCount();
+    if (voxels == 0) return false;
+    ++made_[std::size_t(bin)];
+    madeVoxels_[std::size_t(bin)] += double(voxels);
+    madeTotalVoxels_ += double(voxels);
+    madeBoxVoxels_ += double(shape.dims.count());
+    return place(detail::prepareShape(shape), size, bin);
+  }
+
+  // Best fit (paper 3.7): the smallest spots that may hold the shape first, checked voxel by voxel.
+  bool place(const detail::FitShape& shape, const ParticleSize& size, int bin) {
+    tried_.clear();
+    const float cap = field_.maxRadius();
+    for (int step = 0; step < kRadiusSteps; ++step) {
+      const float t = float(step) / float(kRadiusSteps - 1);
+      const float radius = std::min(cap, shape.innerRadius + t * (shape.outerRadius - shape.innerRadius));
+      const std::vector<Voxel> spots = field_.bestFit(radius, options_.candidatesPerTry, rng_);
+      if (spots.empty()) return false;  // nothing this spacious, so nothing more spacious either
+      for (const Voxel& spot : spots) {
+        if (std::find(tried_.begin(), tried_.end(), spot) != tried_.end()) continue;
+        tried_.push_back(spot);
+        if (detail::fitsAt(shape, spot, field_.at(spot), result_.ids, options_.dims)) {
+          commit(shape, spot, size, bin);
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  void commit(const detail::FitShape& shape, const Voxel& spot, const ParticleSize& size, int bin) {
+    const int id = int(result_.particles.size()) + 1;
+    const Voxel origin = detail::originAt(shape, spot);
+    volumeVoxels_.clear();
+    for (const Voxel& v : shape.voxels) {
+      const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};
+      result_.ids[options_.dims.index(w)] = id;
+      volumeVoxels_.push_back(w);
+    }
+    field_.insert(volumeVoxels_);
+    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size()});
+    ++result_.placedPerBin[std::size_t(bin)];
+    placedVoxels_ += shape.voxels.size();
+    if (options_.progress && id % kProgressEvery == 0) options_.progress(fraction(), id);
+  }
+
+  PlacementResult finish(const std::string& reason) {
+    result_.stopReason = reason;
+    result_.volumeFraction = fraction();
+    const auto placed = double(result_.particles.size());
+    for (int b = 0; b < kBins; ++b)
+      result_.volumeHistogram[std::size_t(b)] = placed > 0 ? result_.placedPerBin[std::size_t(b)] / placed : 0;
+    if (options_.progress) options_.progress(result_.volumeFraction, int(result_.particles.size()));
+    return std::move(result_);
+  }
+
+  const ExemplarStats& stats_;
+  const ParticleFactory& factory_;
+  SpaciousnessField& field_;
+  const PlacementOptions& options_;
+  BinPairs pairs_;
+  Rng rng_;
+  std::array<double, kBins> ratio_{}, boxGuess_{}, madeVoxels_{};
+  std::array<int, kBins> made_{};
+  std::array<bool, kBins> open_{};
+  double madeTotalVoxels_ = 0, madeBoxVoxels_ = 0, targetVoxels_ = 0;
+  std::size_t placedVoxels_ = 0;
+  PlacementResult result_;
+  std::vector<Voxel> tried_, volumeVoxels_;
+};
+
+} // namespace
+
+PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
+                                  SpaciousnessField& field, const PlacementOptions& options) {
+  checkOptions(options, field);
+  return Placer(stats, factory, field, options).run();
+}
+
+} // namespace solidtex

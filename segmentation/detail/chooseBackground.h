@@ -1,0 +1,19 @@
+#pragma once
+#include <opencv2/core.hpp>
+
+namespace solidtex::detail {
+
+// How much a class of pixels (CV_8U mask) looks like particles: it is cut into bodies the same way
+// particles are (distance transform + convexity), and the share of its pixels that lie in bodies
+// clear of the image border, weighted by each body's solidity (pixels / convex hull), is returned.
+// Bodies smaller than minArea count as nothing.
+double compactness(const cv::Mat& classMask, double minArea);
+
+// True when `upper` (CV_8U, 255 on one class; the other class is its complement) is the
+// background. Particles are compact bodies inside the frame; the background is what lies between
+// them and runs out of the frame, so it is the less compact class. This holds whether the
+// background is the larger class (candies on paper) or the smaller one (the shadowed gaps between
+// packed gravel grains, which break into ragged pieces).
+bool upperIsBackground(const cv::Mat& upper, double minArea);
+
+} // namespace solidtex::detail

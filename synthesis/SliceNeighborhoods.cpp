@@ -1,0 +1,21 @@
+#include "synthesis/SliceNeighborhoods.h"
+
+namespace solidtex::synthesis {
+
+void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c, const NeighborhoodShape& shape,
+                             float* out) {
+  const SliceAxes s = sliceAxes(axis);
+  std::array<int, 3> p = c;
+  for (int j = shape.lo(); j <= shape.hi(); ++j) {
+    p[s.w] = volume.wrap(c[s.w] + j);
+    for (int i = shape.lo(); i <= shape.hi(); ++i) {
+      p[s.u] = volume.wrap(c[s.u] + i);
+      const float* v = volume.at(volume.index(p[0], p[1], p[2]));
+      *out++ = v[0];
+      *out++ = v[1];
+      *out++ = v[2];
+    }
+  }
+}
+
+} // namespace solidtex::synthesis

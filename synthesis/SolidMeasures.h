@@ -1,0 +1,48 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "synthesis/RgbImage.h"
+#include "synthesis/WorkVolume.h"
+#include "voxel/SolidVolume.h"
+
+namespace solidtex::synthesis {
+
+/// How the quality of a solid texture is measured.
+struct MeasureOptions {
+  int neighborhood = 8;        ///< side of the compared square neighbourhoods
+  int axisSamples = 1536;      ///< slice neighbourhoods sampled on axis-aligned slices (a third per axis)
+  int obliqueSamples = 1536;   ///< slice neighbourhoods sampled on random oblique planes
+  std::uint64_t seed = 12345;  ///< where the samples lie
+  int histogramBins = 8;       ///< per channel, for the joint colour histogram
+};
+
+/// Slice energy: mean over sampled slice neighbourhoods of the squared distance to the nearest
+/// exemplar neighbourhood (exact, full dimension), divided by the vector length, colours sRGB in [0,1].
+struct SliceEnergy {
+  double axis = 0;     ///< on slices orthogonal to x, y and z
+  double oblique = 0;  ///< on randomly rotated planes (trilinear sampling, periodic)
+};
+
+/// Measures the slice energy of a periodic sRGB volume against the exemplar. Deterministic.
+SliceEnergy sliceEnergy(const WorkVolume& srgbVolume, const RgbImage& exemplar, const MeasureOptions& options = {});
+
+/// Total-variation distance (in [0,1]) between the joint RGB histograms (bins^3) of `count`
+/// interleaved sRGB colours and of the exemplar's pixels.
+double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImage& exemplar, int bins = 8);
+
+/// Statistics of the position histogram (voxels per exemplar pixel).
+struct PositionHistogramStats {
+  double coverage = 0;   ///< share of exemplar pixels copied by at least one voxel
+  double flatness = 0;   ///< normalised entropy of the histogram: 1 = every pixel equally often
+  double variation = 0;  ///< coefficient of variation (std / mean) of the counts
+};
+
+/// Statistics of the sources (exemplar pixel index per voxel, negative = none) over `pixels` pixels.
+PositionHistogramStats positionHistogramStats(const std::vector<std::int32_t>& sources, int pixels);
+
+/// A periodic sRGB working volume from a (cubic) SolidVolume's linear colours, sources kept when
+/// present (exemplar pixel index y * exemplarWidth + x).
+WorkVolume srgbVolumeOf(const SolidVolume& volume, int exemplarWidth);
+
+} // namespace solidtex::synthesis

@@ -1,0 +1,68 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+
+#include "synthesis/ChenWangSolver.h"
+#include "synthesis/SolidMeasures.h"
+#include "voxel/SolidVolume.h"
+
+namespace solidtex {
+
+/// Which continuous solid synthesis method runs.
+enum class Method {
+  ChenWang,  ///< Chen & Wang 2010: discrete solver, k-coherence, position and index histogram matching
+  Kopf,      ///< Kopf et al. 2007: IRLS weighted average, colour histogram matching (baseline)
+};
+
+/// "chen-wang" or "kopf".
+std::string methodName(Method method);
+/// Parses "chen-wang" / "kopf"; throws InputError otherwise.
+Method parseMethod(const std::string& name);
+
+/// Options of synthesizeSolid; defaults follow the paper and the `solidtex synthesize` command.
+struct SynthesisOptions {
+  Method method = Method::ChenWang;
+  int size = 64;                           ///< output is size^3 voxels; size / 2^(levels-1) must be whole
+  int levels = 3;                          ///< multi-resolution levels, coarsest first
+  std::vector<int> neighborhoods{8, 6, 4}; ///< neighbourhood side per level, coarsest first (one value: all levels)
+  int k = 5;                               ///< k-coherence similarity set size
+  int iterations = 5;                      ///< search + optimisation iterations per level
+  int pcaDims = 20;                        ///< PCA dimensions of neighbourhood vectors
+  std::optional<cv::Mat> control;          ///< greyscale map the exemplar's size: theta(p), phi(p) (brighter = more)
+  std::uint64_t seed = 1;
+  int threads = 0;                         ///< worker threads; 0 = all cores. Output does not depend on it.
+  std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
+
+  // Finer controls (rarely changed).
+  int sparseStep = 2;         ///< slice neighbourhoods are matched on every step-th voxel in-plane
+  int coherenceRadius = 1;    ///< k-coherence candidates come from slice neighbours within this radius
+  int minSeparation = 2;      ///< similarity sets skip neighbourhoods within this many pixels
+  int exhaustiveBelow = 2048; ///< levels with fewer exemplar neighbourhoods are searched exhaustively
+  double irlsExponent = 0.8;  ///< r of the IRLS weights ||s - e||^(r-2)
+  /// Eq. 4's counts H and theta are scaled as if theta (voxels per exemplar pixel) were this, so the
+  /// re-weighting is equally strong at every level and size; <= 0 = the paper's plain counts.
+  double histogramReferenceCount = 512;
+  double indexReferenceCount = 128;  ///< the same for eq. 6 (slice neighbourhoods per exemplar neighbourhood)
+  /// How chen-wang's discrete solver picks the copied proposal (see DiscreteSolveSettings).
+  synthesis::DiscreteSolveSettings::Choice choice = synthesis::DiscreteSolveSettings::Choice::ColourMode;
+  double modeBandwidth = 0.01;
+  int histogramBins = 16;     ///< per channel, Kopf's colour histograms (eq. 3)
+  bool measure = true;        ///< add slice energies and histogram statistics to the report
+  synthesis::MeasureOptions measureOptions;
+  std::string exemplarName;   ///< stored in the volume's metadata
+};
+
+/// The synthesised volume and its report (JSON: settings, energy per level and iteration, time per
+/// level, quality figures, peak memory).
+struct SynthesisResult {
+  SolidVolume volume;    ///< dims size^3, linear RGB colour, density empty, sourcePosition for chen-wang
+  nlohmann::json report;
+};
+
+} // namespace solidtex

@@ -1,0 +1,131 @@
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <map>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "common/Error.h"
+#include "particles/ParticleFactory.h"
+#include "shapes.h"
+
+namespace solidtex {
+namespace {
+
+// The paper's Fig. 4: boxes (60,50), (60,50), (50,70), (60,80).
+ExemplarStats figureFourStats() {
+  return test::statsOf({test::ellipseContour(29.5, 24.5), test::ellipseContour(29.5, 24.5, {300, 100}),
+                        test::ellipseContour(24.5, 34.5), test::ellipseContour(29.5, 39.5)});
+}
+
+TEST(PickDepth, DrawsThePapersCandidatesByFrequency) {
+  const ExemplarStats stats = figureFourStats();
+  ASSERT_EQ(stats.particles[0].box.size(), cv::Size(60, 50));
+  ASSERT_EQ(stats.particles[2].box.size(), cv::Size(50, 70));
+  ASSERT_EQ(stats.particles[3].box.size(), cv::Size(60, 80));
+  const ParticleFactory factory(stats, {.shapes = 2});
+  Rng rng(7);
+  std::map<int, int> depths, sources;
+  const int draws = 40000;
+  for (int i = 0; i < draws; ++i) {
+    const ParticleSize size = factory.pickDepth(60, 50, rng);
+    EXPECT_EQ(size.width, 60);
+    EXPECT_EQ(size.height, 50);
+    ++depths[size.depth];
+    ++sources[size.source];
+  }
+  ASSERT_EQ(depths.size(), 4u);
+  for (const int depth : {50, 60, 70, 80}) EXPECT_NEAR(double(depths[depth]) / draws, 0.25, 0.015) << depth;
+  ASSERT_EQ(sources.size(), 2u);  // the two (60,50) particles, evenly
+  EXPECT_NEAR(double(sources[0]) / draws, 0.5, 0.015);
+  EXPECT_EQ(sources[0] + sources[1], draws);
+}
+
+TEST(PickDepth, UnknownSizesFallBackToThePhotosSides) {
+  const ExemplarStats stats = figureFourStats();
+  const ParticleFactory factory(stats, {.shapes = 1});
+  Rng rng(3);
+  for (int i = 0; i < 200; ++i) {
+    const ParticleSize size = factory.pickDepth(13, 17, rng);
+    EXPECT_TRUE(size.depth == 50 || size.depth == 60 || size.depth == 70 || size.depth == 80) << size.depth;
+    EXPECT_TRUE(size.source == 0 || size.source == 1) << size.source;  // nearest box (60,50): |dw|+|dh| = 80
+  }
+}
+
+std::vector<HullMesh> poolWithThreads(const ExemplarStats& stats, int threads) {
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  return ParticleFactory(stats, {.shapes = 16, .seed = 42}).hulls();
+}
+
+TEST(ParticleFactory, PoolIsTheSameAtAnyThreadCount) {
+  const ExemplarStats stats = test::gravelStats(40, 11);
+  const std::vector<HullMesh> one = poolWithThreads(stats, 1), two = poolWithThreads(stats, 2);
+  ASSERT_EQ(one.size(), 16u);
+  ASSERT_EQ(two.size(), 16u);
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].triangles, two[i].triangles) << i;
+    EXPECT_EQ(one[i].vertices, two[i].vertices) << i;
+    EXPECT_TRUE(test::closedAndConsistent(one[i])) << i;
+    EXPECT_GT(one[i].volume(), 0.01) << i;
+  }
+  const std::vector<HullMesh> otherSeed = ParticleFactory(stats, {.shapes = 16, .seed = 43}).hulls();
+  EXPECT_NE(one[0].vertices, otherSeed[0].vertices);
+}
+
+TEST(ParticleFactory, MakesTheRequestedBoxInOnePiece) {
+  const ExemplarStats stats = test::gravelStats(30, 5);
+  const ParticleFactory factory(stats, {.shapes = 8});
+  Rng rng(9);
+  for (int i = 0; i < 40; ++i) {
+    const ParticleSize size = factory.pickDepth(stats.sizePairs[i % stats.sizePairs.size()].width,
+                                                stats.sizePairs[i % stats.sizePairs.size()].height, rng);
+    const VoxelShape shape = factory.make(size.width, size.height, size.depth, rng);
+    ASSERT_EQ(shape.dims, (Dims{size.width, size.height, size.depth}));
+    EXPECT_TRUE(test::tightInBox(shape));
+    EXPECT_EQ(test::firstPieceSize(shape), shape.voxelCount());
+    EXPECT_EQ(stats.particles[std::size_t(size.source)].box.size(), cv::Size(size.width, size.height));
+  }
+}
+
+TEST(ParticleFactory, RejectsBadOptionsAndContourlessPhotos) {
+  const ExemplarStats stats = figureFourStats();
+  EXPECT_THROW(ParticleFactory(stats, {.views = 0}), InputError);
+  EXPECT_THROW(ParticleFactory(stats, {.shapes = 0}), InputError);
+  EXPECT_THROW(ParticleFactory(stats, {.contourVertices = 2}), InputError);
+  EXPECT_THROW(ParticleFactory(test::statsOf({{{0, 0}, {5, 0}, {9, 0}}}), {}), InputError);
+  EXPECT_THROW(ParticleFactory(ExemplarStats{}, {}), InputError);
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double cpuMillisecondsSince(std::clock_t start) { return double(std::clock() - start) * 1000.0 / CLOCKS_PER_SEC; }
+
+// Figures for the report, not pass/fail: the machine is shared. CPU time covers all threads.
+TEST(ParticleFactoryTiming, PoolAndMake) {
+  const ExemplarStats stats = test::gravelStats(200, 1);
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpuStart = std::clock();
+  const ParticleFactory factory(stats, {.shapes = 64});
+  const double poolMs = millisecondsSince(start), poolCpuMs = cpuMillisecondsSince(cpuStart);
+  std::size_t triangles = 0;
+  for (const HullMesh& h : factory.hulls()) triangles += h.triangles.size();
+  std::printf("[timing] pool of 64 hulls (3 views, 48 vertices), 2 threads: %.0f ms wall, %.0f ms CPU, %.0f triangles "
+              "per hull\n",
+              poolMs, poolCpuMs, double(triangles) / 64);
+  for (const int side : {20, 60}) {
+    Rng rng(1);
+    const int count = side == 20 ? 2000 : 200;
+    std::size_t voxels = 0;
+    const std::clock_t makeStart = std::clock();
+    for (int i = 0; i < count; ++i) voxels += factory.make(side, side, side, rng).voxelCount();
+    std::printf("[timing] make %d^3: %.3f ms CPU each, %.0f%% of the box filled\n", side,
+                cpuMillisecondsSince(makeStart) / count, 100.0 * double(voxels) / count / (side * side * side));
+  }
+}
+
+} // namespace
+} // namespace solidtex

@@ -1,0 +1,211 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
+
+#include "common/Error.h"
+#include "placement/placeLargestFirst.h"
+
+namespace solidtex {
+namespace {
+
+// The statistics segmentation would report for a photo of discs: radius -> how many.
+ExemplarStats discStats(const std::map<int, int>& discs, double areaFraction) {
+  ExemplarStats stats;
+  stats.name = "discs";
+  stats.imageWidth = stats.imageHeight = 200;
+  std::map<std::pair<int, int>, int> pairs;
+  for (const auto& [radius, count] : discs)
+    for (int i = 0; i < count; ++i) {
+      Particle2D p;
+      p.id = int(stats.particles.size()) + 1;
+      cv::ellipse2Poly(cv::Point(100, 100), cv::Size(radius, radius), 0, 0, 360, 5, p.contour);
+      p.area = cv::contourArea(p.contour);
+      p.box = cv::boundingRect(p.contour);
+      p.color = cv::Vec3f(0.5f, 0.4f, 0.3f);
+      p.mask = cv::Mat(p.box.size(), CV_8U, cv::Scalar(255));
+      p.residual = cv::Mat::zeros(p.box.size(), CV_32FC3);
+      ++pairs[{p.box.width, p.box.height}];
+      stats.particles.push_back(p);
+    }
+  const auto [smallest, largest] = std::minmax_element(stats.particles.begin(), stats.particles.end(),
+                                                       [](const auto& a, const auto& b) { return a.area < b.area; });
+  for (int i = 0; i <= 10; ++i) stats.histogram.edges[std::size_t(i)] = smallest->area + (largest->area - smallest->area) * i / 10;
+  for (const Particle2D& p : stats.particles) ++stats.histogram.counts[std::size_t(stats.histogram.binOf(p.area))];
+  for (int i = 0; i < 10; ++i)
+    stats.histogram.ratios[std::size_t(i)] = double(stats.histogram.counts[std::size_t(i)]) / double(stats.particles.size());
+  for (const auto& [size, count] : pairs) stats.sizePairs.push_back({size.first, size.second, count});
+  stats.areaFraction = areaFraction;
+  return stats;
+}
+
+const std::map<int, int> kDiscs{{3, 14}, {4, 10}, {5, 7}, {6, 5}, {8, 3}, {10, 1}};
+
+ParticleOptions fewShapes() {
+  ParticleOptions options;
+  options.shapes = 6;
+  return options;
+}
+
+PlacementResult place(const ExemplarStats& stats, PlacerKind kind, Dims dims, std::uint64_t seed = 1,
+                      double voxelsPerPixel = 0.8) {
+  const ParticleFactory factory(stats, fewShapes());
+  const auto field = makeSpaciousnessField(kind, dims, float(std::sqrt(3.0) * 21 * voxelsPerPixel / 2 + 1));
+  PlacementOptions options;
+  options.dims = dims;
+  options.voxelsPerPixel = voxelsPerPixel;
+  options.seed = seed;
+  return placeLargestFirst(stats, factory, *field, options);
+}
+
+// Whether the voxels with this id form one 6-connected piece.
+bool connected(const PlacementResult& r, const PlacedParticle& p) {
+  std::vector<std::size_t> queue;
+  std::vector<std::uint8_t> seen(r.ids.size(), 0);
+  for (std::size_t i = 0; i < r.ids.size() && queue.empty(); ++i)
+    if (r.ids[i] == p.id) queue.push_back(i);
+  if (queue.empty()) return false;
+  seen[queue[0]] = 1;
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const Voxel v = r.dims.voxel(queue[q]);
+    const int step[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (const auto& s : step) {
+      if (!r.dims.contains(v.x + s[0], v.y + s[1], v.z + s[2])) continue;
+      const std::size_t n = r.dims.index(v.x + s[0], v.y + s[1], v.z + s[2]);
+      if (r.ids[n] == p.id && !seen[n]) {
+        seen[n] = 1;
+        queue.push_back(n);
+      }
+    }
+  }
+  return queue.size() == p.voxelCount;
+}
+
+// Ids, boxes, counts and histograms agree with each other; particles are whole and never overlap
+// (each voxel holds one id, and every particle still has all its voxels).
+void expectConsistent(const PlacementResult& r, const ExemplarStats& stats) {
+  ASSERT_EQ(r.ids.size(), r.dims.count());
+  std::vector<std::size_t> counted(r.particles.size() + 1, 0);
+  for (std::size_t i = 0; i < r.ids.size(); ++i) {
+    ASSERT_GE(r.ids[i], 0);
+    ASSERT_LE(r.ids[i], int(r.particles.size()));
+    ++counted[std::size_t(r.ids[i])];
+    if (r.ids[i] == 0) continue;
+    const PlacedParticle& p = r.particles[std::size_t(r.ids[i] - 1)];
+    const Voxel v = r.dims.voxel(i);
+    EXPECT_TRUE(v.x >= p.origin.x && v.y >= p.origin.y && v.z >= p.origin.z && v.x < p.origin.x + p.box.x &&
+                v.y < p.origin.y + p.box.y && v.z < p.origin.z + p.box.z);
+  }
+  std::size_t occupied = 0;
+  std::array<int, 10> perBin{};
+  for (std::size_t i = 0; i < r.particles.size(); ++i) {
+    const PlacedParticle& p = r.particles[i];
+    EXPECT_EQ(p.id, int(i) + 1);
+    EXPECT_EQ(counted[i + 1], p.voxelCount);
+    EXPECT_TRUE(p.origin.x >= 0 && p.origin.y >= 0 && p.origin.z >= 0 && p.origin.x + p.box.x <= r.dims.x &&
+                p.origin.y + p.box.y <= r.dims.y && p.origin.z + p.box.z <= r.dims.z)
+        << "particle " << p.id << " is clipped by the walls";
+    EXPECT_TRUE(connected(r, p)) << "particle " << p.id << " is not one piece";
+    EXPECT_GT(stats.histogram.counts[std::size_t(p.bin)], 0);
+    EXPECT_GE(p.source, 0);
+    ++perBin[std::size_t(p.bin)];
+    occupied += p.voxelCount;
+  }
+  EXPECT_EQ(perBin, r.placedPerBin);
+  EXPECT_DOUBLE_EQ(r.volumeFraction, double(occupied) / double(r.dims.count()));
+  if (!r.particles.empty()) {
+    EXPECT_NEAR(std::accumulate(r.volumeHistogram.begin(), r.volumeHistogram.end(), 0.0), 1.0, 1e-9);
+  }
+  EXPECT_FALSE(r.stopReason.empty());
+}
+
+class PlaceLargestFirst : public testing::TestWithParam<PlacerKind> {};
+
+TEST_P(PlaceLargestFirst, ReachesTheAreaFractionWithWholeSeparateParticles) {
+  const ExemplarStats stats = discStats(kDiscs, 0.25);
+  const PlacementResult r = place(stats, GetParam(), {40, 44, 48});
+  expectConsistent(r, stats);
+  EXPECT_EQ(r.stopReason, "area fraction reached");
+  EXPECT_GE(r.volumeFraction, 0.25);
+  EXPECT_LT(r.volumeFraction, 0.25 + 0.01);  // stops at the first particle past the target
+}
+
+TEST_P(PlaceLargestFirst, SaysWhyWhenTheFractionCannotBeReached) {
+  const ExemplarStats stats = discStats(kDiscs, 0.95);
+  const PlacementResult r = place(stats, GetParam(), {24, 24, 24});
+  expectConsistent(r, stats);
+  EXPECT_EQ(r.stopReason.rfind("no bin fits any more (fraction ", 0), 0u) << r.stopReason;
+  EXPECT_LT(r.volumeFraction, 0.95);
+  EXPECT_GT(std::accumulate(r.rejectedPerBin.begin(), r.rejectedPerBin.end(), 0), 0);
+}
+
+TEST_P(PlaceLargestFirst, IsDeterministicForTheSeed) {
+  const ExemplarStats stats = discStats(kDiscs, 0.2);
+  const PlacementResult a = place(stats, GetParam(), {32, 32, 32}, 9);
+  EXPECT_EQ(a.ids, place(stats, GetParam(), {32, 32, 32}, 9).ids);
+  EXPECT_NE(a.ids, place(stats, GetParam(), {32, 32, 32}, 10).ids);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllKinds, PlaceLargestFirst,
+                         testing::Values(PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay),
+                         [](const testing::TestParamInfo<PlacerKind>& info) { return placerName(info.param); });
+
+TEST(PlaceLargestFirstHistogram, FollowsThePhotosProportions) {
+  const ExemplarStats stats = discStats(kDiscs, 0.3);
+  const PlacementResult r = place(stats, PlacerKind::Edt, {64, 64, 64}, 3, 0.6);
+  expectConsistent(r, stats);
+  ASSERT_EQ(r.stopReason, "area fraction reached");
+  for (int b = 0; b < 10; ++b)
+    EXPECT_NEAR(r.volumeHistogram[std::size_t(b)], stats.histogram.ratios[std::size_t(b)], 0.08) << "bin " << b;
+}
+
+TEST(PlaceLargestFirstHistogram, PlacesLargestBinsFirst) {
+  const ExemplarStats stats = discStats(kDiscs, 0.15);
+  const PlacementResult r = place(stats, PlacerKind::Edt, {48, 48, 48}, 4);
+  ASSERT_FALSE(r.particles.empty());
+  EXPECT_EQ(r.particles.front().bin, 9);  // the one 10-pixel disc is the largest bin
+}
+
+TEST(PlaceLargestFirstOptions, NothingToPlaceForAZeroFraction) {
+  const ExemplarStats stats = discStats(kDiscs, 0);
+  const PlacementResult r = place(stats, PlacerKind::Discrete, {16, 16, 16});
+  EXPECT_TRUE(r.particles.empty());
+  EXPECT_EQ(r.volumeFraction, 0);
+  EXPECT_FALSE(r.stopReason.empty());
+}
+
+TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
+  const ExemplarStats stats = discStats(kDiscs, 0.1);
+  const ParticleFactory factory(stats, fewShapes());
+  const auto field = makeSpaciousnessField(PlacerKind::Edt, {24, 24, 24}, 12);
+  PlacementOptions options;
+  options.dims = {24, 24, 24};
+  options.voxelsPerPixel = 0.7;
+  double lastFraction = -1;
+  int lastPlaced = -1;
+  options.progress = [&](double fraction, int placed) {
+    lastFraction = fraction;
+    lastPlaced = placed;
+  };
+  const PlacementResult r = placeLargestFirst(stats, factory, *field, options);
+  EXPECT_EQ(lastPlaced, int(r.particles.size()));
+  EXPECT_DOUBLE_EQ(lastFraction, r.volumeFraction);
+
+  PlacementOptions bad = options;
+  bad.voxelsPerPixel = 0;
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad = options;
+  bad.candidatesPerTry = 0;
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad = options;
+  bad.dims = {24, 24, 25};
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), std::invalid_argument);
+  EXPECT_THROW(placeLargestFirst(ExemplarStats{}, factory, *field, options), InputError);
+}
+
+} // namespace
+} // namespace solidtex

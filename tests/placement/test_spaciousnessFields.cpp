@@ -1,0 +1,167 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/Error.h"
+#include "placement/SpaciousnessField.h"
+#include "scenes.h"
+
+namespace solidtex {
+namespace {
+
+using test::Scene;
+
+constexpr PlacerKind kAllKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay};
+const Dims kDims{24, 28, 32};
+
+// What each kind promises against the exact spaciousness (capped at maxRadius).
+void expectConsistent(PlacerKind kind, float value, double exact, float maxRadius, const Voxel& v) {
+  const double capped = std::min(exact, double(maxRadius));
+  SCOPED_TRACE(testing::Message() << placerName(kind) << " at (" << v.x << "," << v.y << "," << v.z << ")");
+  if (kind == PlacerKind::Discrete) {
+    EXPECT_LE(value, capped + 1e-4);
+    EXPECT_GE(value, capped / std::sqrt(3.0) - 1e-4);
+  } else {
+    EXPECT_NEAR(value, capped, 1e-4);
+  }
+}
+
+// Compares every voxel; stops at the first few failures to keep the output readable.
+void expectFieldConsistent(const SpaciousnessField& field, const Scene& scene, float maxRadius) {
+  const std::vector<double> exact = scene.exactField();
+  for (std::size_t i = 0; i < exact.size() && !testing::Test::HasFailure(); ++i) {
+    const Voxel v = scene.dims().voxel(i);
+    expectConsistent(field.kind(), field.at(v), exact[i], maxRadius, v);
+  }
+}
+
+class FieldTest : public testing::TestWithParam<PlacerKind> {};
+
+TEST_P(FieldTest, EmptyVolumeHoldsTheWallDistance) {
+  const auto field = makeSpaciousnessField(GetParam(), kDims, 9.5f);
+  EXPECT_EQ(field->kind(), GetParam());
+  EXPECT_EQ(field->dims(), kDims);
+  EXPECT_FLOAT_EQ(field->maxRadius(), 9.5f);
+  EXPECT_FLOAT_EQ(field->at({0, 5, 7}), 1);
+  EXPECT_FLOAT_EQ(field->at({3, 27, 12}), 1);
+  EXPECT_FLOAT_EQ(field->at({4, 6, 8}), 5);
+  EXPECT_FLOAT_EQ(field->at({12, 14, 16}), 9.5f);  // 12 from the walls, capped
+}
+
+TEST_P(FieldTest, MatchesTheExactSpaciousnessAfterEachInsertion) {
+  for (const float maxRadius : {4.5f, 60.0f}) {
+    SCOPED_TRACE(testing::Message() << "maxRadius " << maxRadius);
+    const auto field = makeSpaciousnessField(GetParam(), kDims, maxRadius);
+    Scene scene(kDims);
+    Rng rng(7);
+    for (int particle = 0; particle < 8 && !HasFailure(); ++particle) {
+      field->insert(scene.addRandomParticle(rng));
+      expectFieldConsistent(*field, scene, maxRadius);
+    }
+  }
+}
+
+TEST_P(FieldTest, BestFitGivesDistinctFreeSpotsSmallestFirst) {
+  const auto field = makeSpaciousnessField(GetParam(), kDims, 8.5f);
+  Scene scene(kDims);
+  Rng rng(11);
+  for (int particle = 0; particle < 10; ++particle) field->insert(scene.addRandomParticle(rng));
+  for (const float radius : {0.5f, 2.0f, 3.2f, 6.0f}) {
+    SCOPED_TRACE(testing::Message() << "radius " << radius);
+    const std::vector<Voxel> spots = field->bestFit(radius, 40, rng);
+    EXPECT_FALSE(spots.empty());
+    EXPECT_LE(spots.size(), 40u);
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+      EXPECT_FALSE(scene.occupied(spots[i]));
+      EXPECT_GE(field->at(spots[i]), radius);
+      EXPECT_EQ(std::count(spots.begin(), spots.end(), spots[i]), 1);
+      // The Delaunay field orders by its candidates' values, which at() (exact) may exceed.
+      if (i > 0 && GetParam() != PlacerKind::Delaunay) {
+        EXPECT_LE(field->at(spots[i - 1]), field->at(spots[i]));
+      }
+    }
+  }
+  EXPECT_TRUE(field->bestFit(8.6f, 10, rng).empty());  // above the cap
+}
+
+TEST_P(FieldTest, BestFitIsDeterministicForTheSeed) {
+  const auto run = [](std::uint64_t seed) {
+    const auto field = makeSpaciousnessField(GetParam(), kDims, 7.5f);
+    Scene scene(kDims);
+    Rng sceneRng(3), rng(seed);
+    std::vector<Voxel> all;
+    for (int particle = 0; particle < 6; ++particle) {
+      field->insert(scene.addRandomParticle(sceneRng));
+      for (const Voxel& v : field->bestFit(1.5f, 16, rng)) all.push_back(v);
+    }
+    return all;
+  };
+  const std::vector<Voxel> first = run(5);
+  EXPECT_EQ(first, run(5));
+  EXPECT_NE(first, run(6));
+}
+
+TEST_P(FieldTest, RejectsVoxelsOutsideTheVolume) {
+  const auto field = makeSpaciousnessField(GetParam(), kDims, 5);
+  EXPECT_THROW(field->at({-1, 0, 0}), std::out_of_range);
+  EXPECT_THROW(field->insert({{1, 1, 1}, {24, 0, 0}}), std::out_of_range);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllKinds, FieldTest, testing::ValuesIn(kAllKinds),
+                         [](const testing::TestParamInfo<PlacerKind>& info) { return placerName(info.param); });
+
+// Where several voxels share the smallest value at least the radius, best fit must start there.
+TEST(BucketFields, BestFitStartsAtTheSmallestSufficientValue) {
+  for (const PlacerKind kind : {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt}) {
+    SCOPED_TRACE(placerName(kind));
+    const auto field = makeSpaciousnessField(kind, kDims, 8.5f);
+    Scene scene(kDims);
+    Rng rng(19);
+    for (int particle = 0; particle < 10; ++particle) field->insert(scene.addRandomParticle(rng));
+    for (const float radius : {1.0f, 2.5f, 4.1f}) {
+      float smallest = 1e9f;
+      for (std::size_t i = 0; i < kDims.count(); ++i) {
+        const float value = field->at(kDims.voxel(i));
+        if (value >= radius) smallest = std::min(smallest, value);
+      }
+      const std::vector<Voxel> spots = field->bestFit(radius, 1, rng);
+      ASSERT_EQ(spots.size(), 1u);
+      EXPECT_FLOAT_EQ(field->at(spots[0]), smallest);
+    }
+  }
+}
+
+// The best candidate circumsphere is the largest empty ball up to the rounding of its centre.
+TEST(DelaunayField, LargestCandidateIsTheLargestEmptyBallWithinOneVoxel) {
+  const auto field = makeSpaciousnessField(PlacerKind::Delaunay, kDims, 100);
+  Scene scene(kDims);
+  Rng sceneRng(23), rng(1);
+  for (int particle = 0; particle < 10; ++particle) {
+    field->insert(scene.addRandomParticle(sceneRng));
+    const std::vector<double> exact = scene.exactField();
+    const double largest = *std::max_element(exact.begin(), exact.end());
+    double lo = 0, hi = 100;  // largest candidate value: the last radius that still gets a spot
+    while (hi - lo > 1e-3) {
+      const double mid = (lo + hi) / 2;
+      (field->bestFit(float(mid), 1, rng).empty() ? hi : lo) = mid;
+    }
+    EXPECT_LE(lo, largest + 1e-3) << "after particle " << particle;
+    EXPECT_GE(lo, largest - 1) << "after particle " << particle;
+  }
+}
+
+TEST(SpaciousnessField, ParsesPlacerNames) {
+  for (const PlacerKind kind : kAllKinds) EXPECT_EQ(parsePlacerKind(placerName(kind)), kind);
+  EXPECT_THROW(parsePlacerKind("voronoi"), InputError);
+}
+
+TEST(SpaciousnessField, RejectsAbsurdArguments) {
+  EXPECT_THROW(makeSpaciousnessField(PlacerKind::Edt, {0, 4, 4}, 3), InputError);
+  EXPECT_THROW(makeSpaciousnessField(PlacerKind::Discrete, {4, 4, 4}, 0), InputError);
+  EXPECT_THROW(makeSpaciousnessField(PlacerKind::Delaunay, {4, 4, 4}, std::nanf("")), InputError);
+  EXPECT_THROW(makeSpaciousnessField(PlacerKind::Brute, {2048, 2048, 2048}, 3), InputError);
+}
+
+} // namespace
+} // namespace solidtex

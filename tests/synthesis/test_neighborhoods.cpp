@@ -1,0 +1,133 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "synthesis/ExemplarNeighborhoods.h"
+#include "synthesis/ExemplarPyramid.h"
+#include "synthesis/SliceMatches.h"
+#include "synthesis/SliceNeighborhoods.h"
+#include "synthesis/Upsample.h"
+#include "TestImages.h"
+
+using namespace solidtex;
+using namespace solidtex::synthesis;
+
+namespace {
+
+/// A periodic n^3 volume whose every z-slice is the (n x n) exemplar.
+WorkVolume stackedVolume(const RgbImage& ex) {
+  WorkVolume v;
+  v.n = ex.width;
+  v.rgb.resize(v.count() * 3);
+  v.source.resize(v.count());
+  for (int z = 0; z < v.n; ++z)
+    for (int y = 0; y < v.n; ++y)
+      for (int x = 0; x < v.n; ++x) {
+        std::copy(ex.at(x, y), ex.at(x, y) + 3, v.at(v.index(x, y, z)));
+        v.source[v.index(x, y, z)] = y * ex.width + x;
+      }
+  return v;
+}
+
+} // namespace
+
+TEST(Neighborhoods, ExemplarNeighborhoodLayout) {
+  const RgbImage ex = toRgbImage(test::randomImage(10, 9, 1));
+  const NeighborhoodShape shape{4};
+  EXPECT_EQ(shape.lo(), -2);
+  EXPECT_EQ(shape.hi(), 1);
+  const ExemplarNeighborhoods n = buildExemplarNeighborhoods(ex, shape, 48);
+  EXPECT_EQ(n.cols, 7);
+  EXPECT_EQ(n.rows, 6);
+  const int m = n.indexOf(4, 5);
+  EXPECT_EQ(n.centreX(m), 4);
+  EXPECT_EQ(n.centreY(m), 5);
+  // First component: pixel (centre + lo, centre + lo), red.
+  EXPECT_EQ(n.full(0, m), ex.at(2, 3)[0]);
+  EXPECT_EQ(n.full(shape.dims() - 1, m), ex.at(5, 6)[2]);
+  EXPECT_EQ(n.clampedIndexOf(-5, 100), n.indexOf(2, 7));
+}
+
+TEST(Neighborhoods, CentreGridIdsRoundTrip) {
+  const SliceCentreGrid grid{8, 2};
+  EXPECT_EQ(grid.count(), 3u * 8 * 4 * 4);
+  for (std::size_t id = 0; id < grid.count(); ++id) EXPECT_EQ(grid.id(grid.axisOf(id), grid.voxelOf(id)), id);
+}
+
+TEST(Neighborhoods, CoveringCentresSurroundTheVoxel) {
+  const NeighborhoodShape shape{6};
+  for (int step : {1, 2}) {
+    const SliceCentreGrid grid{12, step};
+    const std::array<int, 3> v{3, 0, 11};
+    std::set<std::size_t> seen;
+    forEachCoveringCentre(grid, shape, v, [&](std::size_t id, int i, int j) {
+      const int axis = grid.axisOf(id);
+      const SliceAxes s = sliceAxes(axis);
+      auto c = grid.voxelOf(id);
+      EXPECT_EQ(c[axis], v[axis]);
+      EXPECT_EQ((c[s.u] + i + 12) % 12, v[s.u]);
+      EXPECT_EQ((c[s.w] + j + 12) % 12, v[s.w]);
+      seen.insert(id);
+    });
+    EXPECT_EQ(seen.size(), std::size_t(3 * (6 / step) * (6 / step)));
+  }
+}
+
+TEST(Neighborhoods, ZSlicesOfAStackedVolumeMatchTheExemplarExactly) {
+  const RgbImage ex = toRgbImage(test::smoothImage(16, 16));
+  const WorkVolume v = stackedVolume(ex);
+  const ExemplarNeighborhoods n = buildExemplarNeighborhoods(ex, NeighborhoodShape{4}, 48);
+  std::vector<float> q(n.shape.dims());
+  gatherSliceNeighborhood(v, 2, {6, 7, 3}, n.shape, q.data());
+  for (int c = 0; c < n.shape.dims(); ++c) EXPECT_EQ(q[c], n.full(c, n.indexOf(6, 7)));
+
+  SliceMatches matches(SliceCentreGrid{16, 2});
+  std::vector<std::int64_t> hist;
+  SearchSettings exhaustive;
+  exhaustive.exhaustive = true;
+  searchPhase(v, n, exhaustive, matches, hist);
+  for (std::size_t id = 0; id < matches.grid.count(); ++id) {
+    if (matches.grid.axisOf(id) != 2) continue;
+    const auto c = matches.grid.voxelOf(id);
+    if (c[0] < 2 || c[0] > 14 || c[1] < 2 || c[1] > 14) continue;  // wholly inside the exemplar
+    EXPECT_EQ(matches.match[id], n.indexOf(c[0], c[1]));
+    EXPECT_NEAR(matches.distance[id], 0.0f, 1e-6f);
+  }
+  std::int64_t total = 0;
+  for (auto h : hist) total += h;
+  EXPECT_EQ(total, std::int64_t(matches.grid.count()));
+}
+
+TEST(Neighborhoods, KCoherenceFindsTheCoherentMatch) {
+  // With sources set, k-coherence candidates include the coherent shift: z-slices match exactly.
+  const RgbImage ex = toRgbImage(test::randomImage(16, 16, 4));
+  const WorkVolume v = stackedVolume(ex);
+  const ExemplarNeighborhoods n = buildExemplarNeighborhoods(ex, NeighborhoodShape{4}, 20);
+  const SimilaritySets sets = buildSimilaritySets(n, 3);
+  SliceMatches matches(SliceCentreGrid{16, 2});
+  std::vector<std::int64_t> hist;
+  SearchSettings s;
+  s.sets = &sets;
+  const double energy = searchPhase(v, n, s, matches, hist);
+  EXPECT_GT(energy, 0.0);
+  for (std::size_t id = 0; id < matches.grid.count(); ++id) {
+    const auto c = matches.grid.voxelOf(id);
+    if (matches.grid.axisOf(id) == 2 && c[0] >= 2 && c[0] <= 14 && c[1] >= 2 && c[1] <= 14) EXPECT_EQ(matches.match[id], n.indexOf(c[0], c[1]));
+  }
+}
+
+TEST(Neighborhoods, UpsamplingDoublesTheVolume) {
+  const RgbImage fine = toRgbImage(test::smoothImage(16, 16));
+  const RgbImage coarse = halve(fine);
+  const WorkVolume v = randomVolume(4, coarse, 7);
+  const WorkVolume up = upsampleSources(v, coarse.width, fine);
+  EXPECT_EQ(up.n, 8);
+  const int p = v.source[v.index(1, 2, 3)];
+  EXPECT_EQ(up.source[up.index(3, 4, 6)], (2 * (p / 8)) * 16 + 2 * (p % 8) + 1);
+  const WorkVolume smooth = upsampleColors(v);
+  EXPECT_EQ(smooth.n, 8);
+  for (float c : smooth.rgb) {
+    EXPECT_GE(c, 0.0f);
+    EXPECT_LE(c, 1.0f);
+  }
+}
