@@ -1,6 +1,7 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -10,9 +11,20 @@
 
 namespace {
 
+/// The arguments that decide the volume, for its metadata: where the outputs go and how many
+/// threads made them are left out, so that the same volume is the same bytes.
 std::string joinArguments(int argc, char** argv) {
-  std::string line;
-  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  const std::set<std::string> dropWithValue = {"-o", "--output", "--threads", "--report", "--preview", "--labels", "--plot"};
+  std::string line = "solidtex";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const std::string name = arg.substr(0, arg.find('='));
+    if (dropWithValue.count(name)) {
+      i += name == arg ? 1 : 0;
+      continue;
+    }
+    if (arg != "--quiet") line += " " + arg;
+  }
   return line;
 }
 

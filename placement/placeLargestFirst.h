@@ -16,7 +16,7 @@ struct PlacementOptions {
   Dims dims{128, 128, 128};
   double voxelsPerPixel = 1;      ///< photo pixels to voxels
   std::uint64_t seed = 1;
-  int candidatesPerTry = 32;      ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
+  int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
   std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
 };
 

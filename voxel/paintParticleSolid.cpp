@@ -33,14 +33,21 @@ Projection randomProjection(Rng& rng, double pixelsPerVoxel) {
 }
 
 /// The background residual with the particles (and their shadow rims) filled in from around them,
-/// so the tiled background carries no ghost outlines of the photo's particles.
+/// so the tiled background carries no ghost outlines of the photo's particles. The rim is as wide as
+/// still leaves a third of the background to fill from: a crowded photo has little to spare.
 cv::Mat fillParticleHoles(const ExemplarStats& stats) {
-  cv::Mat holes;
-  cv::bitwise_not(stats.backgroundMask, holes);
-  cv::dilate(holes, holes, cv::getStructuringElement(cv::MORPH_ELLIPSE, {11, 11}));
+  const int backgroundPixels = cv::countNonZero(stats.backgroundMask);
+  if (backgroundPixels == 0) return cv::Mat::zeros(stats.backgroundResidual.size(), CV_32FC3);
+  cv::Mat holes, particles;
+  cv::bitwise_not(stats.backgroundMask, particles);
+  for (const int rim : {11, 7, 5, 3, 1}) {
+    cv::dilate(particles, holes, cv::getStructuringElement(cv::MORPH_ELLIPSE, {rim, rim}));
+    if (3 * (int(holes.total()) - cv::countNonZero(holes)) >= backgroundPixels) break;
+  }
   std::vector<cv::Mat> channels;
   cv::split(stats.backgroundResidual, channels);
-  for (auto& c : channels) cv::inpaint(c, holes, c, 3, cv::INPAINT_TELEA);
+  // Navier-Stokes: OpenCV's Telea overshoots far out of range on float images.
+  for (auto& c : channels) cv::inpaint(c, holes, c, 3, cv::INPAINT_NS);
   cv::Mat filled;
   cv::merge(channels, filled);
   return filled;

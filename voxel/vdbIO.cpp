@@ -1,6 +1,9 @@
 #include "voxel/vdbIO.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include <openvdb/io/File.h>
@@ -72,6 +75,39 @@ openvdb::GridPtrVec gridsOf(const SolidVolume& volume, double voxelSize) {
   return grids;
 }
 
+// OpenVDB stamps each file with a random UUID: magic (8 bytes), format and library versions (12),
+// grid-offsets flag (1), then 36 ASCII characters.
+constexpr std::streamoff kUuidOffset = 21;
+constexpr std::size_t kUuidLength = 36;
+
+/// Replaces the random UUID by one hashed (FNV-1a, two seeds) from the rest of the file, so the
+/// same volume gives the same bytes.
+void stampContentUuid(const std::filesystem::path& file) {
+  std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
+  std::string uuid(kUuidLength, '\0');
+  io.seekg(kUuidOffset);
+  io.read(uuid.data(), std::streamsize(kUuidLength));
+  if (!io || uuid[8] != '-' || uuid[13] != '-' || uuid[18] != '-' || uuid[23] != '-')
+    throw std::logic_error("writeVdb: no UUID where OpenVDB's header keeps it");
+  std::uint64_t hash[2] = {0xcbf29ce484222325ull, 0x84222325cbf29ce4ull};
+  io.seekg(0);
+  std::vector<char> chunk(1 << 20);
+  std::streamoff position = 0;
+  while (io.read(chunk.data(), std::streamsize(chunk.size())) || io.gcount() > 0) {
+    for (std::streamsize i = 0; i < io.gcount(); ++i, ++position) {
+      if (position >= kUuidOffset && position < kUuidOffset + std::streamoff(kUuidLength)) continue;
+      for (auto& h : hash) h = (h ^ std::uint8_t(chunk[std::size_t(i)])) * 0x100000001b3ull;
+    }
+  }
+  io.clear();
+  char text[kUuidLength + 1];
+  std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32), unsigned(hash[0] >> 16) & 0xffffu,
+                unsigned(hash[0]) & 0xffffu, unsigned(hash[1] >> 48), (unsigned long long)(hash[1] & 0xffffffffffffull));
+  io.seekp(kUuidOffset);
+  io.write(text, std::streamsize(kUuidLength));
+  if (!io.flush()) throw std::runtime_error("writeVdb: cannot stamp the UUID");
+}
+
 } // namespace
 
 void writeVdb(const std::string& path, const SolidVolume& volume, double voxelSize) {
@@ -88,9 +124,11 @@ void writeVdb(const std::string& path, const SolidVolume& volume, double voxelSi
     file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
     file.write(gridsOf(volume, voxelSize), meta);
     file.close();
-  } catch (const openvdb::Exception& e) {
+    stampContentUuid(temp);
+  } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove(temp, ignored);
+    if (dynamic_cast<const std::logic_error*>(&e)) throw;
     throw InputError("cannot write " + path + ": " + e.what());
   }
   std::error_code ec;

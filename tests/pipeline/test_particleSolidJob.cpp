@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include "common/Error.h"
+#include "pipeline/jobSupport.h"
+#include "pipeline/particleSolidJob.h"
+#include "voxel/sectionStatistics.h"
+#include "voxel/vdbIO.h"
+
+namespace solidtex {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "solidtex_pipeline_test";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+ParticleSolidJob jobFor(const std::string& exemplar, int size, const fs::path& output) {
+  ParticleSolidJob job;
+  job.photo = std::string(SOLIDTEX_DATA_DIR) + "/particles/" + exemplar + ".png";
+  job.output = output.string();
+  job.dims = {size, size, size};
+  job.progress = false;
+  return job;
+}
+
+// 6-connected pieces per particle id, by one flood fill over the whole volume.
+std::map<std::int32_t, int> piecesPerId(const SolidVolume& volume) {
+  const Dims& dims = volume.dims;
+  std::vector<std::uint8_t> seen(dims.count(), 0);
+  std::vector<std::size_t> stack;
+  std::map<std::int32_t, int> pieces;
+  for (std::size_t start = 0; start < dims.count(); ++start) {
+    const std::int32_t id = volume.particleId[start];
+    if (id == 0 || seen[start]) continue;
+    ++pieces[id];
+    seen[start] = 1;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const Voxel v = dims.voxel(stack.back());
+      stack.pop_back();
+      const int step[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+      for (const auto& s : step) {
+        if (!dims.contains(v.x + s[0], v.y + s[1], v.z + s[2])) continue;
+        const std::size_t n = dims.index(v.x + s[0], v.y + s[1], v.z + s[2]);
+        if (!seen[n] && volume.particleId[n] == id) {
+          seen[n] = 1;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  return pieces;
+}
+
+std::string bytesOf(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class ParticleSolidOfExemplar : public testing::TestWithParam<std::string> {};
+
+// Whole particles, the photo's area fraction in the volume and on its sections (or a stated reason).
+TEST_P(ParticleSolidOfExemplar, GivesWholeParticlesAtThePhotosAreaFraction) {
+  const fs::path output = scratch(GetParam() + ".vdb");
+  const nlohmann::json report = runParticleSolid(jobFor(GetParam(), 64, output));
+  const SolidVolume volume = readVdb(output.string());
+  ASSERT_EQ(volume.dims, (Dims{64, 64, 64}));
+
+  const std::map<std::int32_t, int> pieces = piecesPerId(volume);
+  EXPECT_EQ(pieces.size(), report["volume"]["particles"].get<std::size_t>());
+  for (const auto& [id, count] : pieces) EXPECT_EQ(count, 1) << "particle " << id << " is in pieces";
+
+  std::size_t occupied = 0;
+  for (std::size_t i = 0; i < volume.particleId.size(); ++i) {
+    occupied += volume.particleId[i] > 0;
+    ASSERT_EQ(volume.density[i], volume.particleId[i] > 0 ? 1.f : 0.f);
+  }
+  const double volumeFraction = double(occupied) / double(volume.dims.count());
+  EXPECT_DOUBLE_EQ(volumeFraction, report["volume"]["volume_fraction"].get<double>());
+  const double areaFraction = report["photo"]["area_fraction"].get<double>();
+  if (report["volume"]["stop_reason"] == "area fraction reached") {
+    EXPECT_NEAR(volumeFraction, areaFraction, 0.02);
+    SectionOptions sections;
+    sections.offsetsPerAxis = 64;
+    sections.obliquePlanes = 0;
+    // Every axis plane together holds every voxel once per axis: the sections' fraction is the volume's.
+    EXPECT_NEAR(sampleSections(volume.dims, volume.particleId, sections).areaFraction, volumeFraction, 1e-9);
+  } else {
+    EXPECT_LT(volumeFraction, areaFraction);
+    EXPECT_NE(report["volume"]["stop_reason"].get<std::string>().find("no bin fits"), std::string::npos);
+  }
+  fs::remove(output);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, ParticleSolidOfExemplar, testing::Values("smarties", "coins", "gravel", "leopard"));
+
+TEST(ParticleSolidJob, SameSeedGivesTheSameBytesWithOneAndTwoThreads) {
+  const fs::path one = scratch("one.vdb"), two = scratch("two.vdb"), other = scratch("other.vdb");
+  {
+    const ThreadLimit limit(1);
+    runParticleSolid(jobFor("coins", 48, one));
+  }
+  {
+    const ThreadLimit limit(2);
+    runParticleSolid(jobFor("coins", 48, two));
+    ParticleSolidJob job = jobFor("coins", 48, other);
+    job.seed = 2;
+    runParticleSolid(job);
+  }
+  EXPECT_EQ(bytesOf(one), bytesOf(two));
+  EXPECT_NE(bytesOf(one), bytesOf(other));
+  for (const auto& path : {one, two, other}) fs::remove(path);
+}
+
+TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
+  const fs::path output = scratch("bad.vdb");
+  fs::remove(output);
+  ParticleSolidJob zero = jobFor("coins", 0, output);
+  EXPECT_THROW(runParticleSolid(zero), InputError);
+  ParticleSolidJob absurd = jobFor("coins", kMaxVolumeEdge + 1, output);
+  EXPECT_THROW(runParticleSolid(absurd), InputError);
+  ParticleSolidJob missing = jobFor("no-such-photo", 32, output);
+  EXPECT_THROW(runParticleSolid(missing), InputError);
+  EXPECT_FALSE(fs::exists(output));
+  ParticleSolidJob unwritable = jobFor("coins", 32, "/proc/solidtex/out.vdb");
+  EXPECT_THROW(runParticleSolid(unwritable), InputError);
+}
+
+} // namespace
+} // namespace solidtex
