@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 
 #include "common/Error.h"
@@ -21,6 +22,7 @@ constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
 // tried first, as best fit wants, but an irregular shape that fits none of them still finds room.
 constexpr int kRadiusSteps = 4;
 constexpr int kProgressEvery = 64;
+constexpr int kFailuresToRetire = 8;
 
 using BinPairs = std::array<std::vector<SizePair>, kBins>;
 
@@ -40,15 +42,17 @@ BinPairs pairsPerBin(const ExemplarStats& stats) {
   return pairs;
 }
 
-std::size_t drawByCount(const std::vector<SizePair>& pairs, Rng& rng) {
+// One of `candidates` (indices into pairs), drawn with probability proportional to its pair's count;
+// returns its position in `candidates`.
+std::size_t drawByCount(const std::vector<SizePair>& pairs, const std::vector<std::size_t>& candidates, Rng& rng) {
   long total = 0;
-  for (const SizePair& p : pairs) total += p.count;
+  for (const std::size_t c : candidates) total += pairs[c].count;
   auto draw = long(uniformIndex(rng, std::uint64_t(total)));
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (draw < pairs[i].count) return i;
-    draw -= pairs[i].count;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (draw < pairs[candidates[i]].count) return i;
+    draw -= pairs[candidates[i]].count;
   }
-  return pairs.size() - 1;
+  return candidates.size() - 1;
 }
 
 void checkOptions(const PlacementOptions& options, const SpaciousnessField& field) {
@@ -92,7 +96,7 @@ public:
     for (;;) {
       for (int b = kBins - 1; b >= 0; --b) {
         while (open_[std::size_t(b)] && !fractionReached() && result_.placedPerBin[std::size_t(b)] < quota(b))
-          if (!attempt(b)) open_[std::size_t(b)] = false;
+          if (!attempt(b) && pairs_[std::size_t(b)].empty()) open_[std::size_t(b)] = false;
         if (fractionReached()) return finish("area fraction reached");
       }
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
@@ -132,16 +136,33 @@ private:
   }
 
   // Pairs of the bin in random order, weighted by count, until one is placed; false when none fits.
+  // A pair that found no spot kFailuresToRetire times running is retired: the volume only fills, so
+  // it would hardly find one later, and retrying it is where the time would go in a crowded volume.
   bool attempt(int bin) {
-    std::vector<SizePair> remaining = pairs_[std::size_t(bin)];
-    while (!remaining.empty()) {
-      const std::size_t i = drawByCount(remaining, rng_);
-      const SizePair pair = remaining[i];
-      remaining.erase(remaining.begin() + std::ptrdiff_t(i));
-      if (tryPair(pair, bin)) return true;
-      ++result_.rejectedPerBin[std::size_t(bin)];
+    std::vector<SizePair>& pairs = pairs_[std::size_t(bin)];
+    std::vector<int>& failures = failures_[std::size_t(bin)];
+    failures.resize(pairs.size(), 0);
+    std::vector<std::size_t> untried(pairs.size());
+    std::iota(untried.begin(), untried.end(), 0);
+    bool placed = false;
+    while (!untried.empty() && !placed) {
+      const std::size_t pick = drawByCount(pairs, untried, rng_);
+      const std::size_t pair = untried[pick];
+      untried.erase(untried.begin() + std::ptrdiff_t(pick));
+      placed = tryPair(pairs[pair], bin);
+      if (placed) {
+        failures[pair] = 0;
+      } else {
+        ++failures[pair];
+        ++result_.rejectedPerBin[std::size_t(bin)];
+      }
     }
-    return false;
+    for (std::size_t i = pairs.size(); i-- > 0;)
+      if (failures[i] >= kFailuresToRetire) {
+        pairs.erase(pairs.begin() + std::ptrdiff_t(i));
+        failures.erase(failures.begin() + std::ptrdiff_t(i));
+      }
+    return placed;
   }
 
   bool tryPair(const SizePair& pair, int bin) {
@@ -209,6 +230,7 @@ private:
   SpaciousnessField& field_;
   const PlacementOptions& options_;
   BinPairs pairs_;
+  std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;
   std::array<double, kBins> ratio_{}, boxGuess_{}, madeVoxels_{};
   std::array<int, kBins> made_{};

@@ -5,7 +5,6 @@
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/photo.hpp>
 #include <tbb/parallel_for.h>
 
 #include "common/Random.h"
@@ -32,6 +31,33 @@ Projection randomProjection(Rng& rng, double pixelsPerVoxel) {
   return {u * pixelsPerVoxel, d.cross(u) * pixelsPerVoxel};
 }
 
+/// `image` with the pixels under `holes` replaced by Gaussian-weighted means of the pixels around
+/// them (normalized convolution at doubling widths, each hole pixel from the narrowest that reaches
+/// it): smooth, within the range of the known pixels, and a few blurs' work even for a large photo.
+cv::Mat fillFromAround(const cv::Mat& image, const cv::Mat& holes) {
+  cv::Mat known;
+  cv::bitwise_not(holes, known);
+  known.convertTo(known, CV_32F, 1.0 / 255);
+  cv::Mat known3, weighted;
+  cv::merge(std::vector<cv::Mat>(3, known), known3);
+  cv::multiply(image, known3, weighted);
+  cv::Mat filled = image.clone(), done = known > 0.5f;
+  const double widest = 4.0 * std::max(image.rows, image.cols);
+  for (double sigma = 1; cv::countNonZero(done) < int(done.total()) && sigma < widest; sigma *= 2) {
+    cv::Mat numerator, denominator;
+    cv::GaussianBlur(weighted, numerator, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
+    cv::GaussianBlur(known, denominator, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
+    for (int r = 0; r < image.rows; ++r)
+      for (int c = 0; c < image.cols; ++c) {
+        const float w = denominator.at<float>(r, c);
+        if (done.at<std::uint8_t>(r, c) || w < 1e-3f) continue;
+        filled.at<cv::Vec3f>(r, c) = numerator.at<cv::Vec3f>(r, c) / w;
+        done.at<std::uint8_t>(r, c) = 255;
+      }
+  }
+  return filled;
+}
+
 /// The background residual with the particles (and their shadow rims) filled in from around them,
 /// so the tiled background carries no ghost outlines of the photo's particles. The rim is as wide as
 /// still leaves a third of the background to fill from: a crowded photo has little to spare.
@@ -44,13 +70,7 @@ cv::Mat fillParticleHoles(const ExemplarStats& stats) {
     cv::dilate(particles, holes, cv::getStructuringElement(cv::MORPH_ELLIPSE, {rim, rim}));
     if (3 * (int(holes.total()) - cv::countNonZero(holes)) >= backgroundPixels) break;
   }
-  std::vector<cv::Mat> channels;
-  cv::split(stats.backgroundResidual, channels);
-  // Navier-Stokes: OpenCV's Telea overshoots far out of range on float images.
-  for (auto& c : channels) cv::inpaint(c, holes, c, 3, cv::INPAINT_NS);
-  cv::Mat filled;
-  cv::merge(channels, filled);
-  return filled;
+  return fillFromAround(stats.backgroundResidual, holes);
 }
 
 int wrap(double x, int n) {
