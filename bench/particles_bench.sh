@@ -6,7 +6,7 @@ size=${1:-256}
 shift || true
 placers=("$@")
 [ ${#placers[@]} -eq 0 ] && placers=(discrete edt brute delaunay)
-bin=./build/cli/solidtex
+bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
 out=$(mktemp -d)
 echo "| exemplar | placer | size | wall s | peak MiB | particles | volume fraction | photo fraction |"
 echo "|---|---|---|---|---|---|---|---|"

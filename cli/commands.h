@@ -16,6 +16,7 @@ Action addAnalyzeCommand(CLI::App& app);
 Action addParticlesCommand(CLI::App& app, const std::string& commandLine);
 Action addCompareCommand(CLI::App& app);
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine);
+Action addSpaciousnessCommand(CLI::App& app);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);

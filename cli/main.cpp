@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
       {"particles", solidtex::cli::addParticlesCommand(app, commandLine)},
       {"compare", solidtex::cli::addCompareCommand(app)},
       {"synthesize", solidtex::cli::addSynthesizeCommand(app, commandLine)},
+      {"spaciousness", solidtex::cli::addSpaciousnessCommand(app)},
   };
   try {
     app.parse(argc, argv);

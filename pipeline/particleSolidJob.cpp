@@ -32,18 +32,8 @@ void checkJob(const ParticleSolidJob& job) {
   if (!fs::is_directory(parent)) throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
 }
 
-int largestBoxSide(const ExemplarStats& stats) {
-  int side = 1;
-  for (const auto& pair : stats.sizePairs) side = std::max({side, pair.width, pair.height});
-  return side;
-}
-
 double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
-  if (job.voxelsPerPixel > 0) return job.voxelsPerPixel;
-  // 1:1 keeps particle shapes as resolved as in the photo, unless particles would be so large
-  // that few fit and the walls dominate the packing.
-  const int smallestEdge = std::min({job.dims.x, job.dims.y, job.dims.z});
-  return std::min(1.0, 0.25 * smallestEdge / largestBoxSide(stats));
+  return job.voxelsPerPixel > 0 ? job.voxelsPerPixel : defaultVoxelsPerPixel(stats, job.dims);
 }
 
 std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const ExemplarStats& stats,
@@ -75,6 +65,23 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
 
 } // namespace
 
+int largestBoxSide(const ExemplarStats& stats) {
+  int side = 1;
+  for (const auto& pair : stats.sizePairs) side = std::max({side, pair.width, pair.height});
+  return side;
+}
+
+double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims) {
+  // 1:1 keeps particle shapes as resolved as in the photo, unless particles would be so large
+  // that few fit and the walls dominate the packing.
+  const int smallestEdge = std::min({dims.x, dims.y, dims.z});
+  return std::min(1.0, 0.25 * smallestEdge / largestBoxSide(stats));
+}
+
+float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
+  return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
+}
+
 nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   checkJob(job);
   PhaseTimer timer;
@@ -91,8 +98,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const ParticleFactory factory(stats, particleOptions);
 
   timer.start("placement");
-  const float maxRadius = float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * scale) / 2 + 1);
-  auto field = makeSpaciousnessField(job.placer, job.dims, maxRadius);
+  auto field = makeSpaciousnessField(job.placer, job.dims, placementRadiusCap(stats, scale));
   PlacementOptions placementOptions;
   placementOptions.dims = job.dims;
   placementOptions.voxelsPerPixel = scale;

@@ -31,6 +31,16 @@ struct ParticleSolidJob {
 /// The largest edge a volume may have; beyond it memory, not patience, runs out.
 constexpr int kMaxVolumeEdge = 2048;
 
+/// The largest side of the photo's particle boxes, pixels.
+int largestBoxSide(const ExemplarStats& stats);
+
+/// Voxels per photo pixel when none is asked for: 1, or less when the largest particle would exceed a
+/// quarter of the volume's smallest edge.
+double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims);
+
+/// The spaciousness cap for placing the photo's particles (the paper's sqrt(3) D / 2, plus a voxel).
+float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel);
+
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runParticleSolid(const ParticleSolidJob& job);
 

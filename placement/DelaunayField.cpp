@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <unordered_set>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -134,23 +135,32 @@ public:
 
   std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
     std::vector<Voxel> spots;
+    std::unordered_set<VoxelIndex> seen;  // several cells may round to one spot
     const double first = std::max(1.0, std::ceil(double(radius) * kSteps));
     for (std::size_t k = std::size_t(std::min(first, double(capKey_) + 1)); k <= capKey_; ++k) {
       std::vector<Entry>& bucket = buckets_[k];
       std::size_t taken = 0;
       while (int(spots.size()) < maxCount && taken < bucket.size()) {
         const std::size_t j = taken + std::size_t(uniformIndex(rng, bucket.size() - taken));
-        const Voxel spot = dims_.voxel(bucket[j].spot);
-        if (isOccupied(bucket[j].spot)) {  // a particle covered the spot without destroying the cell
+        const VoxelIndex spot = bucket[j].spot;
+        if (isOccupied(spot)) {  // a particle covered the spot without destroying the cell
           dropCandidate(bucket[j].cell);
           continue;
         }
         swapEntries(bucket, taken++, j);
-        if (std::find(spots.begin(), spots.end(), spot) == spots.end()) spots.push_back(spot);
+        if (seen.insert(spot).second) spots.push_back(dims_.voxel(spot));
       }
       if (int(spots.size()) >= maxCount) break;
     }
     return spots;
+  }
+
+  std::vector<std::pair<Voxel, float>> candidates() const override {
+    std::vector<std::pair<Voxel, float>> out;
+    for (std::uint32_t k = 1; k <= capKey_; ++k)
+      for (const Entry& entry : buckets_[k])
+        if (!isOccupied(entry.spot)) out.emplace_back(dims_.voxel(entry.spot), float(double(k) / kSteps));
+    return out;
   }
 
 private:

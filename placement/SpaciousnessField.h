@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/Grid.h"
@@ -34,6 +35,10 @@ public:
   /// Up to maxCount distinct candidate spots whose spaciousness is at least `radius`, the smallest
   /// spaciousness first (best fit), equal values in an order drawn from rng.
   virtual std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) = 0;
+  /// The spots bestFit picks from with the values it ranks them by, for a field that keeps
+  /// candidates apart from its voxels (Delaunay: rounded circumcentres, valued by their circumradius
+  /// less the rounding). Empty for the grid fields, whose every free voxel is a candidate valued at().
+  virtual std::vector<std::pair<Voxel, float>> candidates() const { return {}; }
 };
 
 /// The field of the given kind over an empty volume.

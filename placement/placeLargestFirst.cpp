@@ -58,6 +58,8 @@ std::size_t drawByCount(const std::vector<SizePair>& pairs, const std::vector<st
 void checkOptions(const PlacementOptions& options, const SpaciousnessField& field) {
   if (!(options.voxelsPerPixel > 0) || !std::isfinite(options.voxelsPerPixel))
     throw InputError("placement: voxels per pixel must be positive, got " + std::to_string(options.voxelsPerPixel));
+  if (options.maxParticles < 0)
+    throw InputError("placement: the particle limit must not be negative, got " + std::to_string(options.maxParticles));
   if (options.candidatesPerTry < 1)
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
@@ -95,9 +97,11 @@ public:
     if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
     for (;;) {
       for (int b = kBins - 1; b >= 0; --b) {
-        while (open_[std::size_t(b)] && !fractionReached() && result_.placedPerBin[std::size_t(b)] < quota(b))
+        while (open_[std::size_t(b)] && !fractionReached() && !limitReached() &&
+               result_.placedPerBin[std::size_t(b)] < quota(b))
           if (!attempt(b) && pairs_[std::size_t(b)].empty()) open_[std::size_t(b)] = false;
         if (fractionReached()) return finish("area fraction reached");
+        if (limitReached()) return finish("particle limit reached");
       }
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
         char reason[96];
@@ -114,6 +118,9 @@ private:
   double boxGuess(const SizePair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
   double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
+  bool limitReached() const {
+    return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
+  }
 
   // Expected voxels of a particle of bin b: the mean of the shapes made for it so far, or its box
   // guess times the share of their boxes that shapes fill so far (about half before any is made).

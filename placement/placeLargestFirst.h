@@ -17,6 +17,7 @@ struct PlacementOptions {
   double voxelsPerPixel = 1;      ///< photo pixels to voxels
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
+  int maxParticles = 0;           ///< stop after this many particles; 0: no limit
   std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
 };
 
@@ -38,7 +39,7 @@ struct PlacementResult {
   std::array<int, 10> rejectedPerBin{};  ///< (w,h) tries that found no spot
   double volumeFraction = 0;
   std::array<double, 10> volumeHistogram{};  ///< ratios of placed particles per bin of volume (paper Fig. 10)
-  std::string stopReason;          ///< "area fraction reached" | "all bins done" | ...
+  std::string stopReason;          ///< "area fraction reached" | "particle limit reached" | "no bin fits any more ..."
 };
 
 /// Places particles one by one, largest area bin first, each at the best-fit spot of `field`

@@ -178,6 +178,21 @@ TEST(PlaceLargestFirstOptions, NothingToPlaceForAZeroFraction) {
   EXPECT_FALSE(r.stopReason.empty());
 }
 
+TEST(PlaceLargestFirstOptions, StopsAtTheParticleLimit) {
+  const ExemplarStats stats = discStats(kDiscs, 0.3);
+  const ParticleFactory factory(stats, fewShapes());
+  const auto field = makeSpaciousnessField(PlacerKind::Edt, {40, 40, 40}, 20);
+  PlacementOptions options;
+  options.dims = {40, 40, 40};
+  options.maxParticles = 5;
+  const PlacementResult r = placeLargestFirst(stats, factory, *field, options);
+  expectConsistent(r, stats);
+  EXPECT_EQ(r.particles.size(), 5u);
+  EXPECT_EQ(r.stopReason, "particle limit reached");
+  options.maxParticles = -1;
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, options), InputError);
+}
+
 TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
   const ExemplarStats stats = discStats(kDiscs, 0.1);
   const ParticleFactory factory(stats, fewShapes());

@@ -1,0 +1,36 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pipeline/spaciousnessJob.h"
+
+namespace solidtex {
+namespace {
+
+// The four fields on one scene of coins.png against the exact distances: what each kind promises.
+TEST(SpaciousnessJob, EachFieldKeepsItsPromiseOnAPhotosScene) {
+  SpaciousnessJob job;
+  job.photo = std::string(SOLIDTEX_DATA_DIR) + "/particles/coins.png";
+  job.size = 40;
+  job.particles = 25;
+  job.progress = false;
+  const nlohmann::json r = runSpaciousness(job);
+  EXPECT_EQ(r["particles"].get<int>(), 25);
+  const auto& fields = r["fields"];
+  for (const char* exact : {"edt", "brute", "delaunay"})
+    EXPECT_EQ(fields[exact]["all_voxels"]["max_abs_error"].get<double>(), 0) << exact;
+  // Discrete underestimates, by at most the share 1 - 1/sqrt(3) of the value.
+  const double largest = r["largest_exact_empty_ball"].get<double>();
+  EXPECT_LE(fields["discrete"]["all_voxels"]["mean_error"].get<double>(), 0);
+  EXPECT_LE(fields["discrete"]["all_voxels"]["max_abs_error"].get<double>(), largest * (1 - 1 / std::sqrt(3.0)) + 1e-4);
+  // Circumsphere candidates are lower bounds, and the largest is the largest empty ball within a voxel.
+  EXPECT_LE(fields["delaunay"]["circumcentres"]["mean_error"].get<double>(), 0);
+  const double candidate = r["largest_circumsphere_candidate"].get<double>();
+  EXPECT_LE(candidate, largest + 1e-4);
+  EXPECT_GE(candidate, largest - 1);
+  for (const char* exact : {"edt", "brute"})
+    for (const auto& fit : fields[exact]["best_fit"]) EXPECT_TRUE(fit["agrees"].get<bool>()) << exact;
+}
+
+} // namespace
+} // namespace solidtex
