@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "common/Error.h"
 #include "pipeline/jobSupport.h"
@@ -109,7 +110,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                   stats.areaFraction);
     progress.update(line);
   };
-  const PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
+  PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
+  field.reset();  // its memory goes to the colour and the .vdb's grids
   progress.done();
 
   timer.start("colour");
@@ -117,9 +119,9 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   volume.metadata = metadataOf(job, stats, placement, scale);
 
   timer.start("write");
-  writeVdb(job.output, volume);
   nlohmann::json outputs = {{"vdb", job.output}};
   if (job.preview) outputs["previews"] = writePreviews(*job.preview, photo, volume);
+  writeVdb(job.output, std::move(volume));
 
   nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
                            {"command", "particles"},

@@ -138,7 +138,9 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
                                     {"all_voxels", errorStats(all)},
                                     {"circumcentres", errorStats(atCentres)},
                                     {"best_fit", bestFits}};
-    errors.push_back({placerName(run.kind), std::move(all), run.seconds});
+    // Delaunay's at() is an exact nearest-vertex query; what it adds is its circumcentre candidates.
+    if (ranksCandidates) errors.push_back({"delaunay (circumcentres)", atCentres, run.seconds});
+    else errors.push_back({placerName(run.kind), all, run.seconds});
   }
   nlohmann::json report = {{"photo", job.photo},
                            {"dims", {dims.x, dims.y, dims.z}},

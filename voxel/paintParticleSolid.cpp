@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
@@ -80,13 +81,13 @@ int wrap(double x, int n) {
 
 } // namespace
 
-SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement,
-                               double voxelsPerPixel, std::uint64_t seed) {
+SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& placement, double voxelsPerPixel,
+                               std::uint64_t seed) {
   SolidVolume volume;
   const Dims dims = placement.dims;
   volume.dims = dims;
-  volume.particleId = placement.ids;
-  volume.density.assign(dims.count(), 0.f);
+  volume.particleId = std::move(placement.ids);
+  placement.ids.clear();
   volume.color.resize(dims.count());
 
   const double pixelsPerVoxel = 1.0 / voxelsPerPixel;
@@ -101,7 +102,7 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult
     for (int y = 0; y < dims.y; ++y)
       for (int x = 0; x < dims.x; ++x) {
         const std::size_t idx = dims.index(x, y, z);
-        const std::int32_t id = placement.ids[idx];
+        const std::int32_t id = volume.particleId[idx];
         const Eigen::Vector3d p(x, y, z);
         if (id == 0) {
           const cv::Vec3f r = backgroundResidual.at<cv::Vec3f>(wrap(p.dot(background.v), backgroundResidual.rows),
@@ -118,7 +119,6 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult
         const Eigen::Vector3d local = p - centre;
         const int c = std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
         const int r = std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
-        volume.density[idx] = 1.f;
         // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
         volume.color[idx] = clamp01(source.color + source.residual.at<cv::Vec3f>(r, c));
       }

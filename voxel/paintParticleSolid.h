@@ -11,8 +11,9 @@ namespace solidtex {
 /// colour plus that particle's own residual, each background voxel the background mean plus the
 /// background residual. Residuals are laid into 3D by parallel projection along an oblique
 /// direction (random per particle), so no axis slice shows them smeared into streaks.
-/// density is 1 on particles, particle_id is the placement's id grid.
-SolidVolume paintParticleSolid(const ExemplarStats& stats, const PlacementResult& placement,
-                               double voxelsPerPixel, std::uint64_t seed);
+/// density is left implicit (1 on particles, as writeVdb writes it); particle_id is the placement's id grid, moved out of `placement` (whose
+/// ids are left empty) so that a 512^3 solid does not hold two copies.
+SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& placement, double voxelsPerPixel,
+                               std::uint64_t seed);
 
 } // namespace solidtex

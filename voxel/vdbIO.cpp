@@ -39,37 +39,53 @@ typename GridT::Ptr sparseFrom(const Dims& dims, const std::vector<Value>& data,
   return grid;
 }
 
-openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::math::Transform::Ptr& xform) {
+// density: the volume's own, or 1 on the particles (the active voxels of `ids`), or 1 everywhere.
+openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::Int32Grid::Ptr& ids,
+                                    const openvdb::math::Transform::Ptr& xform) {
   openvdb::FloatGrid::Ptr grid;
-  if (volume.density.empty()) {
+  if (!volume.density.empty()) {
+    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, 0.f, "density", xform);
+  } else if (ids) {
+    grid = openvdb::FloatGrid::create(
+        std::make_shared<openvdb::FloatTree>(ids->tree(), 0.f, 1.f, openvdb::TopologyCopy()));
+  } else {
     grid = openvdb::FloatGrid::create(0.f);
     grid->denseFill(boxOf(volume.dims), 1.f, true);
-    grid->setName("density");
-    grid->setTransform(xform);
-  } else {
-    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, 0.f, "density", xform);
   }
+  grid->setName("density");
+  grid->setTransform(xform);
   grid->setGridClass(openvdb::GRID_FOG_VOLUME);
   return grid;
 }
 
-openvdb::GridPtrVec gridsOf(const SolidVolume& volume, double voxelSize) {
+template <typename T>
+void release(std::vector<T>& data) {
+  std::vector<T>().swap(data);
+}
+
+// Each dense array is released as soon as its grid is built, so the volume is never held twice.
+openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
+  openvdb::Int32Grid::Ptr ids;
+  if (!volume.particleId.empty()) ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
+  release(volume.particleId);
   openvdb::GridPtrVec grids;
-  grids.push_back(densityGrid(volume, xform));
+  grids.push_back(densityGrid(volume, ids, xform));
+  release(volume.density);
   // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
   auto color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+  release(volume.color);
   color->setVectorType(openvdb::VEC_INVARIANT);
   grids.push_back(color);
   auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
   cd->setName("Cd");
   grids.push_back(cd);
-  if (!volume.particleId.empty())
-    grids.push_back(sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform));
+  if (ids) grids.push_back(ids);
   if (!volume.sourcePosition.empty()) {
     std::vector<Rgb> positions(volume.sourcePosition.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
       positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
+    release(volume.sourcePosition);
     grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f), "source_position", xform));
   }
   return grids;
@@ -110,7 +126,7 @@ void stampContentUuid(const std::filesystem::path& file) {
 
 } // namespace
 
-void writeVdb(const std::string& path, const SolidVolume& volume, double voxelSize) {
+void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   openvdb::initialize();
   if (volume.color.size() != volume.dims.count())
     throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
