@@ -14,6 +14,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto size = std::make_shared<int>(128);
   auto dims = std::make_shared<std::vector<int>>();
   auto placer = std::make_shared<std::string>("edt");
+  auto sizing = std::make_shared<std::string>("sections");
   CLI::App* command = app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
@@ -22,6 +23,9 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--scale", job->voxelsPerPixel,
                       "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)");
   command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")->capture_default_str();
+  command->add_option("--sizing", *sizing,
+                      "sections: particle sizes whose random sections match the photo's areas; bbox: the paper's, from 2D boxes")
+      ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")->capture_default_str();
   command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused")
       ->capture_default_str()->check(CLI::Range(1, 4096));
@@ -32,9 +36,10 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
-  return [job, size, dims, placer, threads] {
+  return [job, size, dims, placer, sizing, threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
     job->placer = parsePlacerKind(*placer);
+    job->sizing = parseSizing(*sizing);
     const ThreadLimit limit(*threads);
     const auto report = runParticleSolid(*job);
     const auto& volume = report["volume"];

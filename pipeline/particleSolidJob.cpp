@@ -38,7 +38,8 @@ double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
 }
 
 std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const ExemplarStats& stats,
-                                              const PlacementResult& placement, double scale) {
+                                              const PlacementResult& placement, double scale,
+                                              const SectionSizing& sizing) {
   char fraction[32], voxelsPerPixel[32];
   std::snprintf(fraction, sizeof fraction, "%.6f", placement.volumeFraction);
   std::snprintf(voxelsPerPixel, sizeof voxelsPerPixel, "%.9g", scale);
@@ -48,7 +49,9 @@ std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const
           {"exemplar", std::filesystem::path(stats.name).filename().string()},
           {"volume_fraction", fraction},
           {"voxels_per_pixel", voxelsPerPixel},
-          {"placer", placerName(job.placer)}};
+          {"placer", placerName(job.placer)},
+          {"sizing", sizingName(job.sizing)},
+          {"size_factor", std::to_string(sizing.sizeFactor)}};
 }
 
 nlohmann::json placementJson(const PlacementResult& placement, const ExemplarStats& stats, double scale) {
@@ -98,12 +101,19 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   particleOptions.seed = job.seed;
   const ParticleFactory factory(stats, particleOptions);
 
+  timer.start("sizing");
+  SectionSizing sizing{1, stats.histogram.ratios, 0};
+  if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed);
+  // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
+  const double particleScale = scale * sizing.sizeFactor;
+
   timer.start("placement");
-  auto field = makeSpaciousnessField(job.placer, job.dims, placementRadiusCap(stats, scale));
+  auto field = makeSpaciousnessField(job.placer, job.dims, placementRadiusCap(stats, particleScale));
   PlacementOptions placementOptions;
   placementOptions.dims = job.dims;
-  placementOptions.voxelsPerPixel = scale;
+  placementOptions.voxelsPerPixel = particleScale;
   placementOptions.seed = job.seed;
+  if (job.sizing == Sizing::Sections) placementOptions.binRatios = sizing.binRatios;
   placementOptions.progress = [&](double fraction, int placed) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", placed, fraction,
@@ -115,8 +125,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.done();
 
   timer.start("colour");
-  SolidVolume volume = paintParticleSolid(stats, placement, scale, job.seed);
-  volume.metadata = metadataOf(job, stats, placement, scale);
+  SolidVolume volume = paintParticleSolid(stats, placement, particleScale, job.seed);
+  volume.metadata = metadataOf(job, stats, placement, scale, sizing);
 
   timer.start("write");
   nlohmann::json outputs = {{"vdb", job.output}};
@@ -127,10 +137,14 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"command", "particles"},
                            {"seed", job.seed},
                            {"placer", placerName(job.placer)},
+                           {"sizing", sizingName(job.sizing)},
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},
                            {"outputs", outputs}};
+  report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
+  report["volume"]["size_factor"] = sizing.sizeFactor;
+  report["volume"]["sizing_residual"] = sizing.residual;
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
   if (job.report) writeJsonFile(*job.report, report);

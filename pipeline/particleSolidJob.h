@@ -8,6 +8,7 @@
 #include "common/Grid.h"
 #include "particles/ParticleFactory.h"
 #include "placement/SpaciousnessField.h"
+#include "placement/sectionSizing.h"
 #include "segmentation/analyzeExemplar.h"
 
 namespace solidtex {
@@ -20,6 +21,7 @@ struct ParticleSolidJob {
   Dims dims{128, 128, 128};
   double voxelsPerPixel = 0;            ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
   PlacerKind placer = PlacerKind::Edt;
+  Sizing sizing = Sizing::Sections;
   ParticleOptions particles;            ///< its seed is replaced by `seed`
   std::uint64_t seed = 1;
   std::optional<std::string> report;

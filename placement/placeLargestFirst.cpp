@@ -84,8 +84,9 @@ public:
         count += p.count;
         boxVolume += p.count * boxGuess(p);
       }
-      ratio_[std::size_t(b)] = double(count) / double(total);
-      open_[std::size_t(b)] = count > 0;
+      photoRatio_[std::size_t(b)] = double(count) / double(total);
+      ratio_[std::size_t(b)] = count > 0 && options.binRatios ? (*options.binRatios)[std::size_t(b)] : photoRatio_[std::size_t(b)];
+      open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0;
       boxGuess_[std::size_t(b)] = count > 0 ? boxVolume / double(count) : 0;
     }
     result_.dims = options.dims;
@@ -104,6 +105,7 @@ public:
         if (limitReached()) return finish("particle limit reached");
       }
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
+        if (topUpWithThePhotosShares()) continue;
         char reason[96];
         std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
                       stats_.areaFraction);
@@ -113,6 +115,20 @@ public:
   }
 
 private:
+  // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
+  // small particles jams early): once no bin of those shares fits, the photo's shares fill the rest.
+  bool topUpWithThePhotosShares() {
+    if (!options_.binRatios || toppedUp_) return false;
+    toppedUp_ = true;
+    ratio_ = photoRatio_;
+    bool any = false;
+    for (int b = 0; b < kBins; ++b) {
+      open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0 && !pairs_[std::size_t(b)].empty();
+      any = any || open_[std::size_t(b)];
+    }
+    return any;
+  }
+
   double scaled(int pixels) const { return std::max(1.0, std::round(pixels * options_.voxelsPerPixel)); }
   // A particle's box before its depth is known: the depth is drawn from the other pairs' sides.
   double boxGuess(const SizePair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
@@ -239,9 +255,10 @@ private:
   BinPairs pairs_;
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;
-  std::array<double, kBins> ratio_{}, boxGuess_{}, madeVoxels_{};
+  std::array<double, kBins> ratio_{}, photoRatio_{}, boxGuess_{}, madeVoxels_{};
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
+  bool toppedUp_ = false;
   double madeTotalVoxels_ = 0, madeBoxVoxels_ = 0, targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
   PlacementResult result_;

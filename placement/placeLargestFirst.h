@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct PlacementOptions {
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
   int maxParticles = 0;           ///< stop after this many particles; 0: no limit
+  /// Share of particles per area bin; empty: the photo's histogram (the paper's rule). Bins without
+  /// photo particles get none whatever their share. When no bin of these shares fits any more before
+  /// the area fraction is reached, the photo's shares fill the rest.
+  std::optional<std::array<double, 10>> binRatios;
   std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
 };
 

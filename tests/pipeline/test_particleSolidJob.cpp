@@ -8,6 +8,7 @@
 
 #include "common/Error.h"
 #include "pipeline/jobSupport.h"
+#include "pipeline/compareJob.h"
 #include "pipeline/particleSolidJob.h"
 #include "voxel/sectionStatistics.h"
 #include "voxel/vdbIO.h"
@@ -102,6 +103,27 @@ TEST_P(ParticleSolidOfExemplar, GivesWholeParticlesAtThePhotosAreaFraction) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, ParticleSolidOfExemplar, testing::Values("smarties", "coins", "gravel", "leopard"));
+
+// Section sizing makes the solid's sections look more like the photo's particles than the paper's
+// box sizing does, at the same area fraction.
+TEST(ParticleSolidJob, SectionSizingBringsSectionAreasCloserToThePhotos) {
+  std::map<Sizing, nlohmann::json> comparison;
+  for (const Sizing sizing : {Sizing::Bbox, Sizing::Sections}) {
+    const fs::path output = scratch(std::string("coins-") + sizingName(sizing) + ".vdb");
+    ParticleSolidJob job = jobFor("coins", 96, output);
+    job.sizing = sizing;
+    runParticleSolid(job);
+    CompareJob compare;
+    compare.photo = job.photo;
+    compare.volume = output.string();
+    comparison[sizing] = runCompare(compare);
+    EXPECT_NEAR(comparison[sizing]["volume_fraction"].get<double>(), comparison[sizing]["area_fraction"].get<double>(), 0.02);
+    fs::remove(output);
+  }
+  EXPECT_LT(comparison[Sizing::Sections]["ks"].get<double>(), comparison[Sizing::Bbox]["ks"].get<double>() - 0.1);
+  EXPECT_LT(comparison[Sizing::Sections]["wasserstein1_over_mean"].get<double>(),
+            comparison[Sizing::Bbox]["wasserstein1_over_mean"].get<double>());
+}
 
 TEST(ParticleSolidJob, SameSeedGivesTheSameBytesWithOneAndTwoThreads) {
   const fs::path one = scratch("one.vdb"), two = scratch("two.vdb"), other = scratch("other.vdb");
