@@ -111,9 +111,12 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   auto field = makeSpaciousnessField(job.placer, job.dims, placementRadiusCap(stats, particleScale));
   PlacementOptions placementOptions;
   placementOptions.dims = job.dims;
-  placementOptions.voxelsPerPixel = particleScale;
+  placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
-  if (job.sizing == Sizing::Sections) placementOptions.binRatios = sizing.binRatios;
+  if (job.sizing == Sizing::Sections) {
+    placementOptions.binRatios = sizing.binRatios;
+    placementOptions.sizeFactor = sizing.sizeFactor;
+  }
   placementOptions.progress = [&](double fraction, int placed) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", placed, fraction,

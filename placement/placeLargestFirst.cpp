@@ -58,6 +58,8 @@ std::size_t drawByCount(const std::vector<SizePair>& pairs, const std::vector<st
 void checkOptions(const PlacementOptions& options, const SpaciousnessField& field) {
   if (!(options.voxelsPerPixel > 0) || !std::isfinite(options.voxelsPerPixel))
     throw InputError("placement: voxels per pixel must be positive, got " + std::to_string(options.voxelsPerPixel));
+  if (!(options.sizeFactor > 0) || !std::isfinite(options.sizeFactor))
+    throw InputError("placement: the size factor must be positive, got " + std::to_string(options.sizeFactor));
   if (options.maxParticles < 0)
     throw InputError("placement: the particle limit must not be negative, got " + std::to_string(options.maxParticles));
   if (options.candidatesPerTry < 1)
@@ -79,16 +81,13 @@ public:
     if (total == 0) throw InputError("placement: the photo has no particle to take sizes from");
     for (int b = 0; b < kBins; ++b) {
       long count = 0;
-      double boxVolume = 0;
-      for (const SizePair& p : pairs_[std::size_t(b)]) {
-        count += p.count;
-        boxVolume += p.count * boxGuess(p);
-      }
+      for (const SizePair& p : pairs_[std::size_t(b)]) count += p.count;
       photoRatio_[std::size_t(b)] = double(count) / double(total);
       ratio_[std::size_t(b)] = count > 0 && options.binRatios ? (*options.binRatios)[std::size_t(b)] : photoRatio_[std::size_t(b)];
       open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0;
-      boxGuess_[std::size_t(b)] = count > 0 ? boxVolume / double(count) : 0;
     }
+    scale_ = options.voxelsPerPixel * (options.binRatios ? options.sizeFactor : 1.0);
+    startSizeEstimates();
     result_.dims = options.dims;
     result_.ids.assign(options.dims.count(), 0);
     targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(options.dims.count()));
@@ -121,6 +120,8 @@ private:
     if (!options_.binRatios || toppedUp_) return false;
     toppedUp_ = true;
     ratio_ = photoRatio_;
+    scale_ = options_.voxelsPerPixel;
+    startSizeEstimates();
     bool any = false;
     for (int b = 0; b < kBins; ++b) {
       open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0 && !pairs_[std::size_t(b)].empty();
@@ -129,7 +130,23 @@ private:
     return any;
   }
 
-  double scaled(int pixels) const { return std::max(1.0, std::round(pixels * options_.voxelsPerPixel)); }
+  // Expected particle volumes per bin start from box guesses and follow the shapes made since.
+  void startSizeEstimates() {
+    for (int b = 0; b < kBins; ++b) {
+      long count = 0;
+      double boxVolume = 0;
+      for (const SizePair& p : pairs_[std::size_t(b)]) {
+        count += p.count;
+        boxVolume += p.count * boxGuess(p);
+      }
+      boxGuess_[std::size_t(b)] = count > 0 ? boxVolume / double(count) : 0;
+    }
+    made_.fill(0);
+    madeVoxels_.fill(0);
+    madeTotalVoxels_ = madeBoxVoxels_ = 0;
+  }
+
+  double scaled(int pixels) const { return std::max(1.0, std::round(pixels * scale_)); }
   // A particle's box before its depth is known: the depth is drawn from the other pairs' sides.
   double boxGuess(const SizePair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
   double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
@@ -259,6 +276,7 @@ private:
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
   bool toppedUp_ = false;
+  double scale_ = 1;  ///< voxels per photo pixel of the particles made now
   double madeTotalVoxels_ = 0, madeBoxVoxels_ = 0, targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
   PlacementResult result_;

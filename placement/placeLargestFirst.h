@@ -21,8 +21,9 @@ struct PlacementOptions {
   int maxParticles = 0;           ///< stop after this many particles; 0: no limit
   /// Share of particles per area bin; empty: the photo's histogram (the paper's rule). Bins without
   /// photo particles get none whatever their share. When no bin of these shares fits any more before
-  /// the area fraction is reached, the photo's shares fill the rest.
+  /// the area fraction is reached, the photo's shares fill the rest, at the photo's sizes.
   std::optional<std::array<double, 10>> binRatios;
+  double sizeFactor = 1;          ///< with binRatios: their particles are this many times the photo's sizes
   std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
 };
 
