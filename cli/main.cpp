@@ -19,6 +19,7 @@ std::string joinArguments(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const std::string name = arg.substr(0, arg.find('='));
+    if (arg.size() > 2 && arg.rfind("-o", 0) == 0 && arg[2] != '-') continue;  // -oPATH
     if (dropWithValue.count(name)) {
       i += name == arg ? 1 : 0;
       continue;

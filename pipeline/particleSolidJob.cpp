@@ -128,7 +128,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.done();
 
   timer.start("colour");
-  SolidVolume volume = paintParticleSolid(stats, placement, particleScale, job.seed);
+  SolidVolume volume = paintParticleSolid(stats, placement, scale, job.seed);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing);
 
   timer.start("write");
@@ -147,7 +147,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"outputs", outputs}};
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
-  report["volume"]["sizing_residual"] = sizing.residual;
+  report["volume"]["sizing_residual"] = job.sizing == Sizing::Sections ? nlohmann::json(sizing.residual) : nlohmann::json();
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
   if (job.report) writeJsonFile(*job.report, report);

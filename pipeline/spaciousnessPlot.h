@@ -6,7 +6,8 @@
 
 namespace solidtex {
 
-/// One spaciousness field's signed errors (field minus exact, voxels) at the free voxels.
+/// One spaciousness field's signed errors (field minus exact, voxels): at the free voxels, or for
+/// Delaunay at its circumcentre candidates.
 struct FieldErrors {
   std::string name;
   std::vector<double> errors;
@@ -14,8 +15,8 @@ struct FieldErrors {
 };
 using SpaciousnessErrors = std::vector<FieldErrors>;
 
-/// One histogram panel per field, side by side, on a shared error axis, with mean, p95 and time
-/// printed: an sRGB CV_32FC3 image for writeImage.
+/// One histogram panel per field, side by side, on a shared error axis, with mean |error|, max
+/// and build time printed: an sRGB CV_32FC3 image for writeImage.
 cv::Mat plotSpaciousnessErrors(const SpaciousnessErrors& fields);
 
 } // namespace solidtex

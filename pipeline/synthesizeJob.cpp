@@ -1,5 +1,7 @@
 #include "pipeline/synthesizeJob.h"
 
+#include <utility>
+
 #include <filesystem>
 
 #include "common/Error.h"
@@ -31,14 +33,12 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   result.volume.metadata["command_line"] = job.commandLine;
   result.volume.metadata["seed"] = std::to_string(options.seed);
   result.volume.metadata["exemplar"] = options.exemplarName;
-  writeVdb(job.output, result.volume);
   nlohmann::json report = result.report;
   report["solidtex_version"] = SOLIDTEX_VERSION;
   report["command"] = "synthesize";
   report["outputs"] = {{"vdb", job.output}};
-  if (job.preview) {
-    report["outputs"]["previews"] = writePreviews(*job.preview, exemplar, result.volume);
-  }
+  if (job.preview) report["outputs"]["previews"] = writePreviews(*job.preview, exemplar, result.volume);
+  writeVdb(job.output, std::move(result.volume));
   report["peak_memory_mib"] = peakMemoryMiB();
   if (job.report) writeJsonFile(*job.report, report);
   return report;

@@ -44,8 +44,7 @@ VoxelCloud boundaryOf(const Dims& dims, const std::vector<std::int32_t>& ids) {
 std::vector<float> exactSpaciousness(const Dims& dims, const std::vector<std::int32_t>& ids, float maxRadius) {
   if (ids.size() != dims.count()) throw std::invalid_argument("exactSpaciousness: ids do not match the dims");
   const VoxelCloud cloud = boundaryOf(dims, ids);
-  Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
+  const Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));  // builds the index
   std::vector<float> out(dims.count());
   tbb::parallel_for(0, dims.z, [&](int z) {
     for (int y = 0; y < dims.y; ++y)

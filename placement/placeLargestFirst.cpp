@@ -120,6 +120,8 @@ private:
     if (!options_.binRatios || toppedUp_) return false;
     toppedUp_ = true;
     ratio_ = photoRatio_;
+    pairs_ = pairsPerBin(stats_);  // pairs retired at the larger sizes get a try at the photo's
+    for (auto& failures : failures_) failures.clear();
     scale_ = options_.voxelsPerPixel;
     startSizeEstimates();
     bool any = false;
@@ -249,7 +251,7 @@ private:
       volumeVoxels_.push_back(w);
     }
     field_.insert(volumeVoxels_);
-    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size()});
+    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), scale_});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += shape.voxels.size();
     if (options_.progress && id % kProgressEvery == 0) options_.progress(fraction(), id);

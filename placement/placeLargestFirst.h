@@ -35,6 +35,7 @@ struct PlacedParticle {
   int source = -1;                ///< index into ExemplarStats::particles (colour, residual)
   int bin = 0;                    ///< area-histogram bin it was made for
   std::size_t voxelCount = 0;
+  double voxelsPerPixel = 1;      ///< the scale it was made at: its photo particle's pixels to voxels
 };
 
 struct PlacementResult {

@@ -14,6 +14,7 @@ namespace solidtex {
 namespace {
 
 constexpr std::uint64_t kKernelStream = 0x6b65726e;  // "kern"
+constexpr double kKernelSide = 32;  // voxels of the largest particle box the kernel is measured on
 
 Eigen::Vector3d randomDirection(Rng& rng) {
   while (true) {
@@ -165,6 +166,10 @@ std::array<double, 10> unfoldBinRatios(const Eigen::Matrix<double, 10, 10>& kern
 
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
                                std::uint64_t seed) {
+  // The kernel is in photo pixels: shapes of a few dozen voxels resolve it, whatever the volume's size.
+  int largestSide = 1;
+  for (const Particle2D& p : stats.particles) largestSide = std::max({largestSide, p.box.width, p.box.height});
+  voxelsPerPixel = std::min(voxelsPerPixel, kKernelSide / largestSide);
   SectionSizing best;
   best.binRatios = stats.histogram.ratios;
   best.residual = INFINITY;

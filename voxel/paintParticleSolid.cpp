@@ -51,7 +51,7 @@ cv::Mat fillFromAround(const cv::Mat& image, const cv::Mat& holes) {
     for (int r = 0; r < image.rows; ++r)
       for (int c = 0; c < image.cols; ++c) {
         const float w = denominator.at<float>(r, c);
-        if (done.at<std::uint8_t>(r, c) || w < 1e-3f) continue;
+        if (done.at<std::uint8_t>(r, c) || w < (sigma * 2 >= widest ? 1e-30f : 1e-3f)) continue;
         filled.at<cv::Vec3f>(r, c) = numerator.at<cv::Vec3f>(r, c) / w;
         done.at<std::uint8_t>(r, c) = 255;
       }
@@ -95,7 +95,8 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& plac
   const Projection background = randomProjection(rng, pixelsPerVoxel);
   std::vector<Projection> projections;
   projections.reserve(placement.particles.size());
-  for (std::size_t i = 0; i < placement.particles.size(); ++i) projections.push_back(randomProjection(rng, pixelsPerVoxel));
+  for (const PlacedParticle& placed : placement.particles)
+    projections.push_back(randomProjection(rng, 1.0 / placed.voxelsPerPixel));
   const cv::Mat backgroundResidual = fillParticleHoles(stats);
 
   tbb::parallel_for(0, dims.z, [&](int z) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <system_error>
 
 #include <openvdb/io/File.h>
@@ -100,6 +101,7 @@ constexpr std::size_t kUuidLength = 36;
 /// same volume gives the same bytes.
 void stampContentUuid(const std::filesystem::path& file) {
   std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
+  if (!io.is_open()) throw std::runtime_error("cannot reopen it to stamp its UUID");
   std::string uuid(kUuidLength, '\0');
   io.seekg(kUuidOffset);
   io.read(uuid.data(), std::streamsize(kUuidLength));
@@ -144,7 +146,7 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove(temp, ignored);
-    if (dynamic_cast<const std::logic_error*>(&e)) throw;
+    if (dynamic_cast<const std::logic_error*>(&e) || dynamic_cast<const std::bad_alloc*>(&e)) throw;
     throw InputError("cannot write " + path + ": " + e.what());
   }
   std::error_code ec;
