@@ -232,7 +232,8 @@ private:
       for (const Voxel& spot : spots) {
         if (std::find(tried_.begin(), tried_.end(), spot) != tried_.end()) continue;
         tried_.push_back(spot);
-        if (detail::fitsAt(shape, spot, field_.at(spot), result_.ids, options_.dims)) {
+        // bestFit's spots hold at least `radius`: a free bound, where at() may be a costly query.
+        if (detail::fitsAt(shape, spot, radius, result_.ids, options_.dims)) {
           commit(shape, spot, size, bin);
           return true;
         }
