@@ -189,8 +189,6 @@ TEST(PlaceLargestFirstOptions, StopsAtTheParticleLimit) {
   expectConsistent(r, stats);
   EXPECT_EQ(r.particles.size(), 5u);
   EXPECT_EQ(r.stopReason, "particle limit reached");
-  options.maxParticles = -1;
-  EXPECT_THROW(placeLargestFirst(stats, factory, *field, options), InputError);
 }
 
 TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
@@ -215,6 +213,12 @@ TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
   EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
   bad = options;
   bad.candidatesPerTry = 0;
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad = options;
+  bad.maxParticles = -1;
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad = options;
+  bad.sizeFactor = 0;
   EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
   bad = options;
   bad.dims = {24, 24, 25};
