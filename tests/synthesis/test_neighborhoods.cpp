@@ -112,7 +112,9 @@ TEST(Neighborhoods, KCoherenceFindsTheCoherentMatch) {
   EXPECT_GT(energy, 0.0);
   for (std::size_t id = 0; id < matches.grid.count(); ++id) {
     const auto c = matches.grid.voxelOf(id);
-    if (matches.grid.axisOf(id) == 2 && c[0] >= 2 && c[0] <= 14 && c[1] >= 2 && c[1] <= 14) EXPECT_EQ(matches.match[id], n.indexOf(c[0], c[1]));
+    if (matches.grid.axisOf(id) == 2 && c[0] >= 2 && c[0] <= 14 && c[1] >= 2 && c[1] <= 14) {
+      EXPECT_EQ(matches.match[id], n.indexOf(c[0], c[1]));
+    }
   }
 }
 
