@@ -114,6 +114,8 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   // Best fit is asked for balls up to the largest that still fits anywhere.
   const double largest = *std::max_element(exact.begin(), exact.end());
   const std::vector<double> radii = {0.25 * largest, 0.5 * largest, 0.75 * largest, largest};
+  std::vector<double> exactBestFits;
+  for (const double r : radii) exactBestFits.push_back(exactBestFit(exact, r));
   SpaciousnessErrors errors;
   nlohmann::json fields = nlohmann::json::object();
   for (FieldRun& run : runs) {
@@ -125,9 +127,9 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
     for (const auto& [v, value] : circumcentres)
       atCentres.push_back(double(ranksCandidates ? value : run.field->at(v)) - exact[dims.index(v)]);
     nlohmann::json bestFits = nlohmann::json::array();
-    for (const double r : radii) {
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+      const double r = radii[k], target = exactBestFits[k];
       const std::vector<Voxel> spot = run.field->bestFit(float(r), 1, rng);
-      const double target = exactBestFit(exact, r);
       const double got = spot.empty() ? NAN : double(exact[dims.index(spot[0])]);
       bestFits.push_back({{"radius", r},
                           {"exact_best_fit", std::isfinite(target) ? nlohmann::json(target) : nlohmann::json()},

@@ -9,20 +9,13 @@
 #include <Eigen/Dense>
 
 #include "common/Error.h"
+#include "common/randomDirection.h"
 
 namespace solidtex {
 namespace {
 
 constexpr std::uint64_t kKernelStream = 0x6b65726e;  // "kern"
 constexpr double kKernelSide = 32;  // voxels of the largest particle box the kernel is measured on
-
-Eigen::Vector3d randomDirection(Rng& rng) {
-  while (true) {
-    const Eigen::Vector3d d(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
-    const double n = d.squaredNorm();
-    if (n > 1e-6 && n <= 1) return d / std::sqrt(n);
-  }
-}
 
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;

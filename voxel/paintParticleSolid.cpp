@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/Random.h"
+#include "common/randomDirection.h"
 
 namespace solidtex {
 namespace {
@@ -23,10 +24,7 @@ struct Projection {
 };
 
 Projection randomProjection(Rng& rng, double pixelsPerVoxel) {
-  Eigen::Vector3d d;
-  do d = {2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1};
-  while (d.squaredNorm() > 1 || d.squaredNorm() < 1e-3);
-  d.normalize();
+  const Eigen::Vector3d d = randomDirection(rng);
   const Eigen::Vector3d helper = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d u = d.cross(helper).normalized();
   return {u * pixelsPerVoxel, d.cross(u) * pixelsPerVoxel};

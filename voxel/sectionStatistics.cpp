@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/Random.h"
+#include "common/randomDirection.h"
 #include "voxel/slice.h"
 
 namespace solidtex {
@@ -67,15 +68,6 @@ SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const 
   plane.width = plane.height = side;
   plane.origin = through - (side - 1) * 0.5 * (plane.u + plane.v);
   return plane;
-}
-
-/// A uniformly distributed direction: rejection sampling in the unit ball, then normalised.
-Eigen::Vector3d randomDirection(Rng& rng) {
-  while (true) {
-    const Eigen::Vector3d d(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
-    const double n = d.squaredNorm();
-    if (n > 1e-6 && n <= 1) return d / std::sqrt(n);
-  }
 }
 
 std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& options) {
