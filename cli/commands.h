@@ -17,6 +17,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine);
 Action addCompareCommand(CLI::App& app);
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine);
 Action addSpaciousnessCommand(CLI::App& app);
+Action addTruthCommand(CLI::App& app);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);

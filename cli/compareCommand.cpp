@@ -19,6 +19,8 @@ Action addCompareCommand(CLI::App& app) {
   command->add_option("--seed", job->sections.seed, "Seed for the oblique planes")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");
   command->add_option("--plot", job->plot, "Write the histograms and CDFs as a PNG");
+  command->add_option("--truth", job->truth, "The 3D truth the photo was cut from (.vdb, as `solidtex truth` writes): compare particle volumes")
+      ->check(CLI::ExistingFile);
   addSegmentationOptions(*command, job->segmentation);
   return [job] {
     const auto r = runCompare(*job);
@@ -26,6 +28,9 @@ Action addCompareCommand(CLI::App& app) {
               << r["volume_fraction"].get<double>() << ", sections " << r["section_area_fraction"].get<double>()
               << "; section areas vs photo: KS " << r["ks"].get<double>() << ", W1/mean "
               << r["wasserstein1_over_mean"].get<double>() << '\n';
+    if (r.contains("truth"))
+      std::cout << "particle volumes vs truth: KS " << r["truth"]["volume_ks"].get<double>() << ", W1/mean "
+                << r["truth"]["volume_wasserstein1_over_mean"].get<double>() << '\n';
     return 0;
   };
 }

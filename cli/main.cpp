@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       {"compare", solidtex::cli::addCompareCommand(app)},
       {"synthesize", solidtex::cli::addSynthesizeCommand(app, commandLine)},
       {"spaciousness", solidtex::cli::addSpaciousnessCommand(app)},
+      {"truth", solidtex::cli::addTruthCommand(app)},
   };
   try {
     app.parse(argc, argv);

@@ -35,6 +35,24 @@ double mean(const std::vector<double>& values) {
   return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
+// Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare.
+nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale) {
+  const SolidVolume truth = readVdb(truthPath);
+  if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
+  const auto it = truth.metadata.find("voxels_per_pixel");
+  const double truthScale = it == truth.metadata.end() ? 1.0 : std::stod(it->second);
+  std::vector<double> truthVolumes = particleVolumes(truth);
+  for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
+  for (double& v : volumes) v /= scale * scale * scale;
+  const double truthMean = mean(truthVolumes);
+  return {{"truth", truthPath},
+          {"particles", truthVolumes.size()},
+          {"mean_volume", truthMean},
+          {"solid_mean_volume", mean(volumes)},
+          {"volume_ks", ksStatistic(truthVolumes, volumes)},
+          {"volume_wasserstein1_over_mean", truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}};
+}
+
 } // namespace
 
 nlohmann::json runCompare(const CompareJob& job) {
@@ -71,6 +89,7 @@ nlohmann::json runCompare(const CompareJob& job) {
       {"photo_mean_area", photoMean},
       {"ks", ksStatistic(photoAreas, sections.areas)},
       {"wasserstein1_over_mean", photoMean > 0 ? wasserstein1(photoAreas, sections.areas) / photoMean : 0.0}};
+  if (job.truth) report["truth"] = compareWithTruth(*job.truth, volumes, scale);
   if (job.plot) writeImage(*job.plot, plotComparison(data, report));
   if (job.report) writeJsonFile(*job.report, report);
   return report;

@@ -18,6 +18,7 @@ struct CompareJob {
   double voxelsPerPixel = 0;           ///< <= 0: read from the .vdb's metadata
   std::optional<std::string> report;   ///< JSON
   std::optional<std::string> plot;     ///< PNG
+  std::optional<std::string> truth;    ///< .vdb of the 3D truth the photo was cut from (`solidtex truth`)
 };
 
 /// Runs the job, writes the requested files and returns the report.

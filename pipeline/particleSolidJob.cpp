@@ -102,7 +102,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const ParticleFactory factory(stats, particleOptions);
 
   timer.start("sizing");
-  SectionSizing sizing{1, stats.histogram.ratios, 0};
+  SectionSizing sizing{1, {}, stats.histogram.ratios, 0};
   if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed);
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = scale * sizing.sizeFactor;
@@ -114,7 +114,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
   if (job.sizing == Sizing::Sections) {
-    placementOptions.binRatios = sizing.binRatios;
+    placementOptions.particleWeights = sizing.particleWeights;
     placementOptions.sizeFactor = sizing.sizeFactor;
   }
   placementOptions.progress = [&](double fraction, int placed) {
@@ -147,7 +147,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"outputs", outputs}};
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
-  report["volume"]["sizing_residual"] = job.sizing == Sizing::Sections ? nlohmann::json(sizing.residual) : nlohmann::json();
+  if (job.sizing == Sizing::Sections) report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
   if (job.report) writeJsonFile(*job.report, report);

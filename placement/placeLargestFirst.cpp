@@ -24,38 +24,57 @@ constexpr int kRadiusSteps = 4;
 constexpr int kProgressEvery = 64;
 constexpr int kFailuresToRetire = 8;
 
-using BinPairs = std::array<std::vector<SizePair>, kBins>;
+// A (width, height) box of the photo's particles and how often 3D particles take it.
+struct WeightedPair {
+  int width = 0, height = 0;
+  double weight = 0;
+};
 
-// The (width, height) pairs of each area bin with their counts, from the particles the histogram
-// counts (not cut by the photo's border); from all particles when every one is cut.
-BinPairs pairsPerBin(const ExemplarStats& stats) {
+using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
+
+// The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
+// the photo's border; all when every one is), weighted by their particles' weights, or counted.
+BinPairs pairsPerBin(const ExemplarStats& stats, const std::vector<double>& particleWeights) {
   const bool anyInner =
       std::any_of(stats.particles.begin(), stats.particles.end(), [](const Particle2D& p) { return !p.border; });
-  std::array<std::map<std::pair<int, int>, int>, kBins> counts;
-  for (const Particle2D& p : stats.particles)
-    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0)
-      ++counts[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height}];
+  std::array<std::map<std::pair<int, int>, double>, kBins> weights;
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+    const Particle2D& p = stats.particles[i];
+    const double weight = particleWeights.empty() ? 1.0 : particleWeights[i];
+    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0 && weight > 0)
+      weights[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height}] += weight;
+  }
   BinPairs pairs;
   for (int b = 0; b < kBins; ++b)
-    for (const auto& [size, count] : counts[std::size_t(b)])
-      pairs[std::size_t(b)].push_back({size.first, size.second, count});
+    for (const auto& [size, weight] : weights[std::size_t(b)]) pairs[std::size_t(b)].push_back({size.first, size.second, weight});
   return pairs;
 }
 
-// One of `candidates` (indices into pairs), drawn with probability proportional to its pair's count;
+double totalWeight(const std::vector<WeightedPair>& pairs) {
+  double total = 0;
+  for (const WeightedPair& p : pairs) total += p.weight;
+  return total;
+}
+
+// One of `candidates` (indices into pairs), drawn with probability proportional to its pair's weight;
 // returns its position in `candidates`.
-std::size_t drawByCount(const std::vector<SizePair>& pairs, const std::vector<std::size_t>& candidates, Rng& rng) {
-  long total = 0;
-  for (const std::size_t c : candidates) total += pairs[c].count;
-  auto draw = long(uniformIndex(rng, std::uint64_t(total)));
+std::size_t drawByWeight(const std::vector<WeightedPair>& pairs, const std::vector<std::size_t>& candidates, Rng& rng) {
+  double total = 0;
+  for (const std::size_t c : candidates) total += pairs[c].weight;
+  double draw = uniform01(rng) * total;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (draw < pairs[candidates[i]].count) return i;
-    draw -= pairs[candidates[i]].count;
+    if (draw < pairs[candidates[i]].weight) return i;
+    draw -= pairs[candidates[i]].weight;
   }
   return candidates.size() - 1;
 }
 
-void checkOptions(const PlacementOptions& options, const SpaciousnessField& field) {
+void checkOptions(const ExemplarStats& stats, const PlacementOptions& options, const SpaciousnessField& field) {
+  const auto& w = options.particleWeights;
+  if (!w.empty() && (w.size() != stats.particles.size() ||
+                     std::any_of(w.begin(), w.end(), [](double v) { return !(v >= 0) || !std::isfinite(v); }) ||
+                     !(std::accumulate(w.begin(), w.end(), 0.0) > 0)))
+    throw InputError("placement: particle weights must be one non-negative number per photo particle, not all 0");
   if (!(options.voxelsPerPixel > 0) || !std::isfinite(options.voxelsPerPixel))
     throw InputError("placement: voxels per pixel must be positive, got " + std::to_string(options.voxelsPerPixel));
   if (!(options.sizeFactor > 0) || !std::isfinite(options.sizeFactor))
@@ -73,20 +92,23 @@ class Placer {
 public:
   Placer(const ExemplarStats& stats, const ParticleFactory& factory, SpaciousnessField& field,
          const PlacementOptions& options)
-      : stats_(stats), factory_(factory), field_(field), options_(options), pairs_(pairsPerBin(stats)),
-        rng_(deriveSeed(options.seed, kPlacementStream)) {
-    long total = 0;
-    for (const auto& bin : pairs_)
-      for (const SizePair& p : bin) total += p.count;
-    if (total == 0) throw InputError("placement: the photo has no particle to take sizes from");
+      : stats_(stats), factory_(factory), field_(field), options_(options),
+        pairs_(pairsPerBin(stats, options.particleWeights)), rng_(deriveSeed(options.seed, kPlacementStream)) {
+    const BinPairs photoPairs = pairsPerBin(stats, {});
+    double total = 0, photoTotal = 0;
     for (int b = 0; b < kBins; ++b) {
-      long count = 0;
-      for (const SizePair& p : pairs_[std::size_t(b)]) count += p.count;
-      photoRatio_[std::size_t(b)] = double(count) / double(total);
-      ratio_[std::size_t(b)] = count > 0 && options.binRatios ? (*options.binRatios)[std::size_t(b)] : photoRatio_[std::size_t(b)];
+      ratio_[std::size_t(b)] = totalWeight(pairs_[std::size_t(b)]);
+      photoRatio_[std::size_t(b)] = totalWeight(photoPairs[std::size_t(b)]);
+      total += ratio_[std::size_t(b)];
+      photoTotal += photoRatio_[std::size_t(b)];
+    }
+    if (photoTotal == 0) throw InputError("placement: the photo has no particle to take sizes from");
+    for (int b = 0; b < kBins; ++b) {
+      ratio_[std::size_t(b)] /= total;
+      photoRatio_[std::size_t(b)] /= photoTotal;
       open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0;
     }
-    scale_ = options.voxelsPerPixel * (options.binRatios ? options.sizeFactor : 1.0);
+    scale_ = options.voxelsPerPixel * (options.particleWeights.empty() ? 1.0 : options.sizeFactor);
     startSizeEstimates();
     result_.dims = options.dims;
     result_.ids.assign(options.dims.count(), 0);
@@ -96,6 +118,7 @@ public:
   PlacementResult run() {
     if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
     for (;;) {
+      const std::size_t placedBefore = result_.particles.size();
       for (int b = kBins - 1; b >= 0; --b) {
         while (open_[std::size_t(b)] && !fractionReached() && !limitReached() &&
                result_.placedPerBin[std::size_t(b)] < quota(b))
@@ -103,6 +126,8 @@ public:
         if (fractionReached()) return finish("area fraction reached");
         if (limitReached()) return finish("particle limit reached");
       }
+      // Every quota met to the nearest particle, and still volume to fill: rounding up places more.
+      roundUp_ = result_.particles.size() == placedBefore;
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
         if (topUpWithThePhotosShares()) continue;
         char reason[96];
@@ -117,10 +142,10 @@ private:
   // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
   // small particles jams early): once no bin of those shares fits, the photo's shares fill the rest.
   bool topUpWithThePhotosShares() {
-    if (!options_.binRatios || toppedUp_) return false;
+    if (options_.particleWeights.empty() || toppedUp_) return false;
     toppedUp_ = true;
     ratio_ = photoRatio_;
-    pairs_ = pairsPerBin(stats_);  // pairs retired at the larger sizes get a try at the photo's
+    pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
     for (auto& failures : failures_) failures.clear();
     scale_ = options_.voxelsPerPixel;
     startSizeEstimates();
@@ -135,13 +160,12 @@ private:
   // Expected particle volumes per bin start from box guesses and follow the shapes made since.
   void startSizeEstimates() {
     for (int b = 0; b < kBins; ++b) {
-      long count = 0;
-      double boxVolume = 0;
-      for (const SizePair& p : pairs_[std::size_t(b)]) {
-        count += p.count;
-        boxVolume += p.count * boxGuess(p);
+      double weight = 0, boxVolume = 0;
+      for (const WeightedPair& p : pairs_[std::size_t(b)]) {
+        weight += p.weight;
+        boxVolume += p.weight * boxGuess(p);
       }
-      boxGuess_[std::size_t(b)] = count > 0 ? boxVolume / double(count) : 0;
+      boxGuess_[std::size_t(b)] = weight > 0 ? boxVolume / weight : 0;
     }
     made_.fill(0);
     madeVoxels_.fill(0);
@@ -150,7 +174,7 @@ private:
 
   double scaled(int pixels) const { return std::max(1.0, std::round(pixels * scale_)); }
   // A particle's box before its depth is known: the depth is drawn from the other pairs' sides.
-  double boxGuess(const SizePair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
+  double boxGuess(const WeightedPair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
   double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
@@ -166,7 +190,9 @@ private:
   }
 
   // The count of bin b the volume should reach: with T particles in all, bin b holds ratio_b T, and T
-  // is chosen so that the open bins' missing particles fill the missing volume.
+  // is chosen so that the open bins' missing particles fill the missing volume. Rounded to the
+  // nearest: rounding every bin up would overfill the volume by half a particle of each large bin
+  // before the smallest bin, which comes last, gets its share.
   int quota(int b) const {
     double missing = targetVoxels_ - double(placedVoxels_), perParticle = 0;
     for (int i = 0; i < kBins; ++i)
@@ -174,21 +200,22 @@ private:
         missing += result_.placedPerBin[std::size_t(i)] * expectedVolume(i);
         perParticle += ratio_[std::size_t(i)] * expectedVolume(i);
       }
-    return int(std::ceil(ratio_[std::size_t(b)] * missing / perParticle - 1e-9));
+    const double share = ratio_[std::size_t(b)] * missing / perParticle;
+    return int(roundUp_ ? std::ceil(share - 1e-9) : std::round(share));
   }
 
-  // Pairs of the bin in random order, weighted by count, until one is placed; false when none fits.
+  // Pairs of the bin in random order, by weight, until one is placed; false when none fits.
   // A pair that found no spot kFailuresToRetire times running is retired: the volume only fills, so
   // it would hardly find one later, and retrying it is where the time would go in a crowded volume.
   bool attempt(int bin) {
-    std::vector<SizePair>& pairs = pairs_[std::size_t(bin)];
+    std::vector<WeightedPair>& pairs = pairs_[std::size_t(bin)];
     std::vector<int>& failures = failures_[std::size_t(bin)];
     failures.resize(pairs.size(), 0);
     std::vector<std::size_t> untried(pairs.size());
     std::iota(untried.begin(), untried.end(), 0);
     bool placed = false;
     while (!untried.empty() && !placed) {
-      const std::size_t pick = drawByCount(pairs, untried, rng_);
+      const std::size_t pick = drawByWeight(pairs, untried, rng_);
       const std::size_t pair = untried[pick];
       untried.erase(untried.begin() + std::ptrdiff_t(pick));
       placed = tryPair(pairs[pair], bin);
@@ -207,7 +234,7 @@ private:
     return placed;
   }
 
-  bool tryPair(const SizePair& pair, int bin) {
+  bool tryPair(const WeightedPair& pair, int bin) {
     const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng_);
     const int w = int(scaled(size.width)), h = int(scaled(size.height)), d = int(scaled(size.depth));
     const VoxelShape shape = factory_.make(w, h, d, rng_);
@@ -278,7 +305,7 @@ private:
   std::array<double, kBins> ratio_{}, photoRatio_{}, boxGuess_{}, madeVoxels_{};
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
-  bool toppedUp_ = false;
+  bool toppedUp_ = false, roundUp_ = false;
   double scale_ = 1;  ///< voxels per photo pixel of the particles made now
   double madeTotalVoxels_ = 0, madeBoxVoxels_ = 0, targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
@@ -290,7 +317,7 @@ private:
 
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
                                   SpaciousnessField& field, const PlacementOptions& options) {
-  checkOptions(options, field);
+  checkOptions(stats, options, field);
   return Placer(stats, factory, field, options).run();
 }
 

@@ -19,11 +19,11 @@ struct PlacementOptions {
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
   int maxParticles = 0;           ///< stop after this many particles; 0: no limit
-  /// Share of particles per area bin; empty: the photo's histogram (the paper's rule). Bins without
-  /// photo particles get none whatever their share. When no bin of these shares fits any more before
-  /// the area fraction is reached, the photo's shares fill the rest, at the photo's sizes.
-  std::optional<std::array<double, 10>> binRatios;
-  double sizeFactor = 1;          ///< with binRatios: their particles are this many times the photo's sizes
+  /// Each photo particle's share of the 3D particles (per ExemplarStats::particles index); empty: the
+  /// photo's frequencies (the paper's rule). When no bin of these shares fits any more before the
+  /// area fraction is reached, the photo's frequencies fill the rest, at the photo's sizes.
+  std::vector<double> particleWeights;
+  double sizeFactor = 1;          ///< with particleWeights: their particles are this many times the photo's sizes
   std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
 };
 

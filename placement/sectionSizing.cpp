@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numeric>
 
-#include <Eigen/Dense>
+#include <tbb/parallel_for.h>
 
 #include "common/Error.h"
 #include "common/randomDirection.h"
@@ -14,8 +13,27 @@
 namespace solidtex {
 namespace {
 
-constexpr std::uint64_t kKernelStream = 0x6b65726e;  // "kern"
-constexpr double kKernelSide = 32;  // voxels of the largest particle box the kernel is measured on
+constexpr std::uint64_t kSectionStream = 0x6b65726e;  // "kern"
+constexpr double kSampleSide = 32;  // voxels of the largest particle box the sections are measured on
+constexpr double kSmallestFactor = 1, kLargestFactor = 2, kFactorStep = 0.02;
+// Light: on sphere kernels with a few hundred photo particles, counting noise, not the smoothing's
+// bias, limits the unfolding (stronger smoothing flattens a two-sized truth into one broad hump).
+constexpr double kSmoothing = 0.05;
+// Factors whose predicted sections are this close (KS) to the best one's fit as well, given the
+// photo's own counting noise (a KS of about 0.87 / sqrt(n) between two photos of n particles).
+constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
+
+// The particles the photo's histogram counts: those not cut by its border, or all when every one is.
+std::vector<std::size_t> statisticalParticles(const ExemplarStats& stats) {
+  const bool anyInner =
+      std::any_of(stats.particles.begin(), stats.particles.end(), [](const Particle2D& p) { return !p.border; });
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+    const Particle2D& p = stats.particles[i];
+    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0) out.push_back(i);
+  }
+  return out;
+}
 
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;
@@ -29,24 +47,79 @@ std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
 // A random plane cutting the shape: its section area is the count of voxel centres within half a
 // voxel of it (a unit-thick slab holds area x 1 of volume), and the shape's extent along the normal
 // is how likely a plane of a random family is to cut it at all.
-void addSections(const std::vector<Eigen::Vector3d>& centres, int planes, double pixelsPerVoxel2,
-                 const ExemplarStats& stats, Rng& rng, double perSample, Eigen::Ref<Eigen::Matrix<double, 10, 1>> column) {
-  std::vector<double> along(centres.size());
-  for (int p = 0; p < planes; ++p) {
-    const Eigen::Vector3d n = randomDirection(rng);
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-      along[i] = n.dot(centres[i]);
-      lo = std::min(lo, along[i]);
-      hi = std::max(hi, along[i]);
-    }
-    const double width = hi - lo + 1;
-    const double at = lo - 0.5 + uniform01(rng) * width;
-    const auto inSlab = std::count_if(along.begin(), along.end(), [&](double t) { return std::abs(t - at) < 0.5; });
-    const double area = double(inSlab) * pixelsPerVoxel2;
-    if (inSlab == 0 || area < stats.minArea) continue;
-    column[stats.histogram.binOf(area)] += width * perSample;
+SectionSample cutAtRandom(const std::vector<Eigen::Vector3d>& centres, std::vector<double>& along, Rng& rng) {
+  const Eigen::Vector3d n = randomDirection(rng);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    along[i] = n.dot(centres[i]);
+    lo = std::min(lo, along[i]);
+    hi = std::max(hi, along[i]);
   }
+  const double width = hi - lo + 1;
+  const double at = lo - 0.5 + uniform01(rng) * width;
+  const auto inSlab = std::count_if(along.begin(), along.end(), [&](double t) { return std::abs(t - at) < 0.5; });
+  return {0, double(inSlab), width};
+}
+
+std::vector<SectionSample> sampleClass(const ExemplarStats& stats, const ParticleFactory& factory,
+                                       const std::vector<std::size_t>& members, double scale, Rng& rng,
+                                       int shapes, int planes) {
+  const auto scaled = [&](int pixels) { return std::max(1, int(std::lround(pixels * scale))); };
+  std::vector<SectionSample> out;
+  std::vector<double> along;
+  for (int s = 0; s < shapes; ++s) {
+    const cv::Rect& box = stats.particles[members[uniformIndex(rng, members.size())]].box;
+    const ParticleSize size = factory.pickDepth(box.width, box.height, rng);
+    const std::vector<Eigen::Vector3d> centres =
+        centresOf(factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng));
+    along.resize(centres.size());
+    for (int p = 0; p < planes; ++p) {
+      SectionSample sample = cutAtRandom(centres, along, rng);
+      sample.area /= scale * scale;
+      sample.width /= scale;
+      out.push_back(sample);
+    }
+  }
+  return out;
+}
+
+// Sections of one particle of class j at `factor`: area, and weight (chance to be cut) per shape.
+template <class Visit>
+void forEachSection(const std::vector<SectionSample>& samples, const std::vector<int>& samplesPerClass,
+                    double minArea, double factor, Visit visit) {
+  for (const SectionSample& s : samples) {
+    const double area = s.area * factor * factor;
+    if (s.area > 0 && area >= minArea)
+      visit(s.particleClass, area, s.width * factor / samplesPerClass[std::size_t(s.particleClass)]);
+  }
+}
+
+std::vector<int> samplesPerClass(const std::vector<SectionSample>& samples, int classes) {
+  std::vector<int> count(std::size_t(classes), 0);
+  for (const SectionSample& s : samples) ++count[std::size_t(s.particleClass)];
+  return count;
+}
+
+// KS between the photo's areas and the sections predicted for 3D class shares x at `factor`.
+double predictedKs(const std::vector<SectionSample>& samples, const std::vector<int>& perClass, double minArea,
+                   double factor, const Eigen::VectorXd& x, const std::vector<double>& sortedPhotoAreas) {
+  std::vector<std::pair<double, double>> predicted;  // (area, weight)
+  forEachSection(samples, perClass, minArea, factor, [&](int c, double area, double weight) {
+    if (x[c] > 0) predicted.emplace_back(area, x[c] * weight);
+  });
+  if (predicted.empty() || sortedPhotoAreas.empty()) return 1;
+  std::sort(predicted.begin(), predicted.end());
+  double total = 0;
+  for (const auto& p : predicted) total += p.second;
+  double ks = 0, cumulative = 0;
+  std::size_t next = 0;
+  const double n = double(sortedPhotoAreas.size());
+  for (std::size_t i = 0; i < sortedPhotoAreas.size(); ++i) {
+    const double a = sortedPhotoAreas[i];
+    while (next < predicted.size() && predicted[next].first <= a) cumulative += predicted[next++].second;
+    ks = std::max({ks, std::abs(cumulative / total - double(i + 1) / n), std::abs(cumulative / total - double(i) / n)});
+  }
+  return ks;
 }
 
 } // namespace
@@ -59,119 +132,136 @@ Sizing parseSizing(const std::string& name) {
 
 const char* sizingName(Sizing sizing) { return sizing == Sizing::Bbox ? "bbox" : "sections"; }
 
-Eigen::Matrix<double, 10, 10> measureSectionKernel(const ExemplarStats& stats, const ParticleFactory& factory,
-                                                   double voxelsPerPixel, double sizeFactor, std::uint64_t seed,
-                                                   int shapesPerBin, int planesPerShape) {
-  std::array<std::vector<SizePair>, 10> pairs;
-  for (const Particle2D& p : stats.particles)
-    if (!p.border && p.box.width > 0 && p.box.height > 0)
-      pairs[std::size_t(stats.histogram.binOf(p.area))].push_back({p.box.width, p.box.height, 1});
-  Eigen::Matrix<double, 10, 10> kernel = Eigen::Matrix<double, 10, 10>::Zero();
-  Rng rng(deriveSeed(seed, kKernelStream));
-  const auto scaled = [&](int pixels) { return std::max(1, int(std::lround(pixels * voxelsPerPixel * sizeFactor))); };
-  const double pixelsPerVoxel2 = 1 / (voxelsPerPixel * voxelsPerPixel);
-  for (int j = 0; j < 10; ++j) {
-    const auto& bin = pairs[std::size_t(j)];
-    if (bin.empty()) continue;
-    for (int s = 0; s < shapesPerBin; ++s) {
-      const SizePair& pair = bin[uniformIndex(rng, bin.size())];
-      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
-      const VoxelShape shape = factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng);
-      // Widths are in voxels: in photo pixels, as the plane spacing of the photo's own section.
-      addSections(centresOf(shape), planesPerShape, pixelsPerVoxel2, stats, rng,
-                  1.0 / (voxelsPerPixel * shapesPerBin * planesPerShape), kernel.col(j));
-    }
+int AreaClasses::classOfArea(double area) const {
+  if (area < edges.front()) return -1;
+  const auto upper = std::upper_bound(edges.begin(), edges.end(), area);
+  return std::min(int(upper - edges.begin()) - 1, count() - 1);
+}
+
+AreaClasses areaClassesOf(const ExemplarStats& stats, int classes) {
+  const std::vector<std::size_t> counted = statisticalParticles(stats);
+  if (counted.empty()) throw InputError("section sizing: the photo has no particle to take sizes from");
+  double lo = INFINITY, hi = 0;
+  for (std::size_t i : counted) {
+    lo = std::min(lo, stats.particles[i].area);
+    hi = std::max(hi, stats.particles[i].area);
   }
+  // A little room below the smallest particle: larger particles' sections that land there are ones
+  // the photo would have shown but does not, and the unfolding must see them to avoid them.
+  lo = std::max({stats.minArea, lo / 2, 1e-9});
+  hi = std::max(hi, lo * 1.0001);
+  AreaClasses out;
+  for (int c = 0; c <= classes; ++c) out.edges.push_back(lo * std::pow(hi / lo, double(c) / classes));
+  out.classOf.assign(stats.particles.size(), -1);
+  for (std::size_t i : counted) out.classOf[i] = std::max(0, out.classOfArea(stats.particles[i].area));
+  return out;
+}
+
+std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, const ParticleFactory& factory,
+                                                  const AreaClasses& classes, double voxelsPerPixel,
+                                                  std::uint64_t seed, int shapesPerClass, int planesPerShape) {
+  std::vector<std::vector<std::size_t>> members(std::size_t(classes.count()));
+  int largestSide = 1;
+  for (std::size_t i = 0; i < stats.particles.size(); ++i)
+    if (classes.classOf[i] >= 0) {
+      members[std::size_t(classes.classOf[i])].push_back(i);
+      largestSide = std::max({largestSide, stats.particles[i].box.width, stats.particles[i].box.height});
+    }
+  const double scale = std::min(voxelsPerPixel, kSampleSide / largestSide);
+  std::vector<std::vector<SectionSample>> perClass(members.size());
+  tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t c) {
+    if (members[c].empty()) return;
+    Rng rng(deriveSeed(seed, kSectionStream + c));
+    perClass[c] = sampleClass(stats, factory, members[c], scale, rng, shapesPerClass, planesPerShape);
+    for (SectionSample& s : perClass[c]) s.particleClass = int(c);
+  });
+  std::vector<SectionSample> out;
+  for (const auto& samples : perClass) out.insert(out.end(), samples.begin(), samples.end());
+  return out;
+}
+
+Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
+                              double sizeFactor) {
+  Eigen::MatrixXd kernel = Eigen::MatrixXd::Zero(classes.count(), classes.count());
+  forEachSection(samples, samplesPerClass(samples, classes.count()), minArea, sizeFactor,
+                 [&](int c, double area, double weight) { kernel(std::max(0, classes.classOfArea(area)), c) += weight; });
   return kernel;
 }
 
-Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
-  const Eigen::Index n = a.cols();
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  std::vector<bool> passive(std::size_t(n), false);
-  const double tolerance = 1e-12 * std::max(1.0, a.norm() * b.norm());
-  for (int outer = 0; outer < 3 * n; ++outer) {
-    const Eigen::VectorXd gradient = a.transpose() * (b - a * x);
-    Eigen::Index best = -1;
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (!passive[std::size_t(i)] && gradient[i] > tolerance && (best < 0 || gradient[i] > gradient[best])) best = i;
-    if (best < 0) break;
-    passive[std::size_t(best)] = true;
-    for (int inner = 0; inner < 3 * n; ++inner) {
-      std::vector<Eigen::Index> set;
-      for (Eigen::Index i = 0; i < n; ++i)
-        if (passive[std::size_t(i)]) set.push_back(i);
-      Eigen::MatrixXd sub(a.rows(), Eigen::Index(set.size()));
-      for (std::size_t k = 0; k < set.size(); ++k) sub.col(Eigen::Index(k)) = a.col(set[k]);
-      const Eigen::VectorXd z = sub.colPivHouseholderQr().solve(b);
-      if (z.minCoeff() > 0) {
-        x.setZero();
-        for (std::size_t k = 0; k < set.size(); ++k) x[set[k]] = z[Eigen::Index(k)];
-        break;
-      }
-      // Step from x towards z until the first passive coefficient reaches 0, and drop it.
-      double alpha = 1;
-      for (std::size_t k = 0; k < set.size(); ++k)
-        if (z[Eigen::Index(k)] <= 0) alpha = std::min(alpha, x[set[k]] / (x[set[k]] - z[Eigen::Index(k)]));
-      for (std::size_t k = 0; k < set.size(); ++k) x[set[k]] += alpha * (z[Eigen::Index(k)] - x[set[k]]);
-      for (std::size_t k = 0; k < set.size(); ++k)
-        if (x[set[k]] <= tolerance) {
-          x[set[k]] = 0;
-          passive[std::size_t(set[k])] = false;
-        }
-    }
+Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::VectorXd& observed, int iterations) {
+  const Eigen::Index n = kernel.cols();
+  const Eigen::VectorXd efficiency = kernel.colwise().sum().transpose();
+  const Eigen::ArrayXd made = (efficiency.array() > 0).cast<double>();
+  Eigen::VectorXd x = made.matrix();
+  if (x.sum() == 0) return x;
+  x /= x.sum();
+  for (int it = 0; it < iterations; ++it) {
+    const Eigen::VectorXd predicted = kernel * x;
+    Eigen::VectorXd ratio = Eigen::VectorXd::Zero(observed.size());
+    for (Eigen::Index i = 0; i < observed.size(); ++i)
+      if (predicted[i] > 0) ratio[i] = observed[i] / predicted[i];
+    const Eigen::VectorXd back = kernel.transpose() * ratio;
+    for (Eigen::Index j = 0; j < n; ++j) x[j] = made[j] > 0 ? x[j] * back[j] / efficiency[j] : 0;
+    // The S of EMS: each class passes kSmoothing of its share to each neighbour (the ends keep theirs).
+    Eigen::VectorXd smooth = x;
+    for (Eigen::Index j = 0; j < n; ++j)
+      smooth[j] = (1 - 2 * kSmoothing) * x[j] + kSmoothing * ((j > 0 ? x[j - 1] : x[j]) + (j + 1 < n ? x[j + 1] : x[j]));
+    x = (smooth.array() * made).matrix();
+    const double total = x.sum();
+    if (!(total > 0)) break;
+    x /= total;
   }
   return x;
 }
 
-namespace {
-
-struct Unfolded {
-  std::array<double, 10> ratios{};
-  double residual = INFINITY;
-};
-
-Unfolded unfold(const Eigen::Matrix<double, 10, 10>& kernel, const std::array<double, 10>& photoRatios) {
-  // Only bins the photo has particles of can be made; their columns are all the kernel has.
-  std::vector<Eigen::Index> made;
-  for (Eigen::Index j = 0; j < 10; ++j)
-    if (photoRatios[std::size_t(j)] > 0 && kernel.col(j).sum() > 0) made.push_back(j);
-  Unfolded out;
-  if (made.empty()) return out;
-  Eigen::MatrixXd a(10, Eigen::Index(made.size()));
-  for (std::size_t k = 0; k < made.size(); ++k) a.col(Eigen::Index(k)) = kernel.col(made[k]);
-  const Eigen::VectorXd b = Eigen::Map<const Eigen::Matrix<double, 10, 1>>(photoRatios.data());
-  const Eigen::VectorXd n = nonNegativeLeastSquares(a, b);
-  const double total = n.sum();
-  if (!(total > 0)) return out;
-  for (std::size_t k = 0; k < made.size(); ++k) out.ratios[std::size_t(made[k])] = n[Eigen::Index(k)] / total;
-  out.residual = (a * n - b).norm() / b.norm();
-  return out;
-}
-
-} // namespace
-
-std::array<double, 10> unfoldBinRatios(const Eigen::Matrix<double, 10, 10>& kernel,
-                                       const std::array<double, 10>& photoRatios) {
-  const Unfolded u = unfold(kernel, photoRatios);
-  return std::isfinite(u.residual) ? u.ratios : photoRatios;
-}
-
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
                                std::uint64_t seed) {
-  // The kernel is in photo pixels: shapes of a few dozen voxels resolve it, whatever the volume's size.
-  int largestSide = 1;
-  for (const Particle2D& p : stats.particles) largestSide = std::max({largestSide, p.box.width, p.box.height});
-  voxelsPerPixel = std::min(voxelsPerPixel, kKernelSide / largestSide);
-  SectionSizing best;
-  best.binRatios = stats.histogram.ratios;
-  best.residual = INFINITY;
-  for (int step = 0; step <= 10; ++step) {
-    const double factor = 1 + 0.1 * step;
-    const Unfolded u = unfold(measureSectionKernel(stats, factory, voxelsPerPixel, factor, seed), stats.histogram.ratios);
-    if (u.residual < best.residual - 1e-9) best = {factor, u.ratios, u.residual};
+  const AreaClasses classes = areaClassesOf(stats);
+  const std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
+  const std::vector<int> perClass = samplesPerClass(samples, classes.count());
+  Eigen::VectorXd observed = Eigen::VectorXd::Zero(classes.count());
+  std::vector<double> photoAreas;
+  for (std::size_t i = 0; i < stats.particles.size(); ++i)
+    if (classes.classOf[i] >= 0) {
+      observed[classes.classOf[i]] += 1;
+      photoAreas.push_back(stats.particles[i].area);
+    }
+  std::sort(photoAreas.begin(), photoAreas.end());
+  const Eigen::VectorXd photoCounts = observed;
+  observed /= observed.sum();
+
+  struct Fit {
+    double factor, ks;
+    Eigen::VectorXd shares;
+  };
+  std::vector<Fit> fits;
+  for (int step = 0; kSmallestFactor + step * kFactorStep <= kLargestFactor + 1e-9; ++step) {
+    const double factor = kSmallestFactor + step * kFactorStep;
+    const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, stats.minArea, factor), observed);
+    fits.push_back({factor, predictedKs(samples, perClass, stats.minArea, factor, x, photoAreas), x});
   }
-  if (!std::isfinite(best.residual)) best = {1, stats.histogram.ratios, 0};
+  // Larger particles with their shares shifted to smaller classes give much the same sections, so
+  // many factors fit about as well; the smallest of them keeps the largest classes for the largest
+  // particles instead of inflating them beyond any the photo implies.
+  double bestKs = INFINITY;
+  for (const Fit& f : fits) bestKs = std::min(bestKs, f.ks);
+  const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photoAreas.size())));
+  const Fit& chosen = *std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.ks <= bestKs + tolerance; });
+  SectionSizing best;
+  best.sizeFactor = chosen.factor;
+  best.predictedKs = chosen.ks;
+  Eigen::VectorXd bestShares = chosen.shares;
+  if (!(bestShares.size() > 0 && bestShares.sum() > 0)) {  // no shape was cut above the photo's specks
+    best.sizeFactor = 1;
+    bestShares = observed;
+  }
+  // A class's share goes to its photo particles evenly, so within a class the photo's sizes recur.
+  best.particleWeights.assign(stats.particles.size(), 0);
+  for (std::size_t i = 0; i < stats.particles.size(); ++i)
+    if (const int c = classes.classOf[i]; c >= 0) {
+      best.particleWeights[i] = bestShares[c] / photoCounts[c];
+      best.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += best.particleWeights[i];
+    }
   return best;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -12,39 +14,64 @@ namespace solidtex {
 /// How the 3D particles are sized from the photo.
 enum class Sizing {
   Bbox,      ///< the paper's: a photo (w,h) pair by its frequency in the photo
-  Sections,  ///< pairs reweighted so that random sections of the solid match the photo's areas
+  Sections,  ///< photo particles reweighted and enlarged so that random sections of the solid match the photo's areas
 };
 
 /// "bbox" | "sections"; throws InputError otherwise.
 Sizing parseSizing(const std::string& name);
 const char* sizingName(Sizing sizing);
 
-/// Column j: how many sections, per particle made for area bin j and per unit of plane spacing,
-/// fall in each area bin of the photo's histogram (the stereological kernel of the particle shapes,
-/// measured by cutting `shapesPerBin` factory particles, their boxes `sizeFactor` times the photo's,
-/// with `planesPerShape` random planes each).
-Eigen::Matrix<double, 10, 10> measureSectionKernel(const ExemplarStats& stats, const ParticleFactory& factory,
-                                                   double voxelsPerPixel, double sizeFactor, std::uint64_t seed,
-                                                   int shapesPerBin = 16, int planesPerShape = 32);
+/// The photo's particles in size classes evenly spaced in log area: the resolution of the unfolding,
+/// finer than the 10-bin histogram where most particles are (its first bin often holds half).
+struct AreaClasses {
+  std::vector<double> edges;      ///< class c covers [edges[c], edges[c+1]); the last includes its upper edge
+  std::vector<int> classOf;       ///< per ExemplarStats::particles index; -1 for the ones statistics leave out
+  int count() const { return int(edges.size()) - 1; }
+  /// Class of an area; -1 below the first edge, the last class above the last edge.
+  int classOfArea(double area) const;
+};
 
-/// Non-negative least squares (Lawson and Hanson): argmin |A x - b| subject to x >= 0.
-Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b);
+/// Classes from the smallest to the largest area of the particles the histogram counts.
+AreaClasses areaClassesOf(const ExemplarStats& stats, int classes = 16);
 
-/// The share of 3D particles per area bin whose random sections reproduce the photo's area
-/// histogram through `kernel` (Saltykov-style unfolding by NNLS); bins the photo lacks stay 0.
-std::array<double, 10> unfoldBinRatios(const Eigen::Matrix<double, 10, 10>& kernel,
-                                       const std::array<double, 10>& photoRatios);
+/// One random plane through one particle made for a class, at size factor 1, in photo pixels.
+struct SectionSample {
+  int particleClass = 0;
+  double area = 0;   ///< pixels^2; 0 when the plane missed every voxel centre
+  double width = 0;  ///< pixels: the particle's extent along the plane's normal (how likely a plane cuts it)
+};
+
+/// Random sections of factory particles made for each class, `shapesPerClass` shapes cut by
+/// `planesPerShape` planes each, measured on shapes whose largest box side is at most 32 voxels
+/// (enough to resolve the areas, whatever the volume's size). Parallel, the same at any thread count.
+std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, const ParticleFactory& factory,
+                                                  const AreaClasses& classes, double voxelsPerPixel,
+                                                  std::uint64_t seed, int shapesPerClass = 32, int planesPerShape = 64);
+
+/// Column j: sections per class-j particle and per pixel of plane spacing that fall in each class,
+/// with every particle `sizeFactor` times larger than sampled (areas times its square, widths
+/// times it); sections below `minArea` are lost as the photo's specks are.
+Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
+                              double sizeFactor);
+
+/// Stereological unfolding by EMS (Silverman et al.'s smoothed expectation-maximisation): the
+/// non-negative 3D class shares x, summing to 1, whose sections `kernel * x` reproduce the observed
+/// section shares. The smoothing step keeps the photo's counting noise out of x; columns of zeros
+/// (classes nothing was made for) get share 0.
+Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::VectorXd& observed, int iterations = 200);
 
 /// Particle sizes whose random sections reproduce the photo's areas.
 struct SectionSizing {
   double sizeFactor = 1;               ///< 3D boxes are this many times the photo's (w,h) and depth
-  std::array<double, 10> binRatios{};  ///< share of particles per area bin
-  double residual = 0;                 ///< |predicted - photo| / |photo| of the section-area histogram
+  std::vector<double> particleWeights; ///< per ExemplarStats::particles index: its share of the 3D particles
+  std::array<double, 10> binRatios{};  ///< the same shares summed per area-histogram bin
+  double predictedKs = 0;              ///< KS of the predicted section areas against the photo's
 };
 
-/// Unfolds the photo's area histogram at size factors 1, 1.1, ..., 2 and keeps the best fit: a
-/// plane rarely cuts a particle through its largest section, so the particles must be larger than
-/// their sections, by more when the photo's sizes are narrowly spread.
+/// Unfolds the photo's section areas at size factors 1 to 2 and keeps the one whose predicted
+/// sections are closest (KS) to the photo's: a plane rarely cuts a particle through its largest
+/// section, so the particles must be larger than their sections, by more when the photo's sizes are
+/// narrowly spread.
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
                                std::uint64_t seed);
 

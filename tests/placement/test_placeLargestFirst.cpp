@@ -221,6 +221,11 @@ TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
   bad.sizeFactor = 0;
   EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
   bad = options;
+  bad.particleWeights.assign(stats.particles.size() + 1, 1.0);
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad.particleWeights.assign(stats.particles.size(), 0.0);
+  EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), InputError);
+  bad = options;
   bad.dims = {24, 24, 25};
   EXPECT_THROW(placeLargestFirst(stats, factory, *field, bad), std::invalid_argument);
   EXPECT_THROW(placeLargestFirst(ExemplarStats{}, factory, *field, options), InputError);

@@ -1,0 +1,49 @@
+#include "pipeline/truthJob.h"
+
+#include <filesystem>
+
+#include "common/Error.h"
+#include "pipeline/jobSupport.h"
+#include "segmentation/imageIO.h"
+#include "voxel/vdbIO.h"
+
+namespace solidtex {
+namespace {
+
+double sectionAreaFraction(const SolidVolume& volume) {
+  const Dims& d = volume.dims;
+  std::size_t filled = 0;
+  for (int j = 0; j < d.y; ++j)
+    for (int i = 0; i < d.x; ++i) filled += volume.particleId[d.index(i, j, d.z / 2)] > 0;
+  return double(filled) / (double(d.x) * double(d.y));
+}
+
+} // namespace
+
+nlohmann::json runTruth(const TruthJob& job) {
+  std::error_code error;
+  std::filesystem::create_directories(job.folder, error);
+  if (error) throw InputError("cannot create folder " + job.folder + ": " + error.message());
+  EllipsoidTruth truth = makeEllipsoidTruth(job.truth);
+
+  std::vector<int> perClass(job.truth.classes.size(), 0);
+  for (int c : truth.classOf) ++perClass[std::size_t(c)];
+  nlohmann::json report = {
+      {"dims", {truth.volume.dims.x, truth.volume.dims.y, truth.volume.dims.z}},
+      {"seed", job.truth.seed},
+      {"particles", truth.classOf.size()},
+      {"particles_per_class", perClass},
+      {"volume_fraction", truth.volumeFraction},
+      {"photo_area_fraction", sectionAreaFraction(truth.volume)},
+      {"volumes", truth.volumes},
+  };
+  const std::filesystem::path folder(job.folder);
+  writeImage((folder / "photo.png").string(), truth.photo);
+  truth.volume.metadata["exemplar"] = "photo.png";
+  truth.volume.metadata["seed"] = std::to_string(job.truth.seed);
+  writeVdb((folder / "truth.vdb").string(), std::move(truth.volume));
+  writeJsonFile((folder / "truth.json").string(), report);
+  return report;
+}
+
+} // namespace solidtex

@@ -1,0 +1,20 @@
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "voxel/ellipsoidTruth.h"
+
+namespace solidtex {
+
+/// `solidtex truth`: a test photo with a known 3D truth behind it.
+struct TruthJob {
+  EllipsoidTruthOptions truth;
+  std::string folder;  ///< receives photo.png, truth.vdb and truth.json
+};
+
+/// Makes the truth, writes photo.png (its middle section), truth.vdb and truth.json (the summary
+/// returned here: particles per class, volume fraction, the photo's area fraction) into the folder.
+nlohmann::json runTruth(const TruthJob& job);
+
+} // namespace solidtex

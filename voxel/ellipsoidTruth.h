@@ -1,0 +1,49 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "voxel/SolidVolume.h"
+
+namespace solidtex {
+
+/// One population of ellipsoids: its size law and its colour in the photo.
+struct EllipsoidClass {
+  double meanRadius = 7;      ///< voxels; median of the equal-volume sphere radius
+  double radiusSpread = 0.2;  ///< standard deviation of the radius' logarithm
+  double share = 0.75;        ///< share of the particles, by number
+  cv::Vec3f srgb{0.92f, 0.55f, 0.16f};
+};
+
+/// A solid with a known 3D truth, for checking a reconstruction against more than its photo.
+struct EllipsoidTruthOptions {
+  Dims dims{640, 640, 72};    ///< periodic on every axis, so no wall biases where particles sit
+  double volumeFraction = 0.2;
+  std::vector<EllipsoidClass> classes{
+      {7, 0.2, 0.75, {0.92f, 0.55f, 0.16f}},   // small and orange
+      {13, 0.15, 0.25, {0.25f, 0.48f, 0.88f}}, // large and blue: colour tells size
+  };
+  double elongation = 1.25;   ///< semi-axes are the radius times factors in [1/e, e], their product 1
+  cv::Vec3f backgroundSrgb{0.16f, 0.16f, 0.17f};
+  double noise = 0.02;        ///< standard deviation of the photo's pixel noise (sRGB)
+  std::uint64_t seed = 1;
+};
+
+/// The truth and its photo.
+struct EllipsoidTruth {
+  SolidVolume volume;         ///< particle_id and linear colour; voxels_per_pixel 1 (the photo is a section)
+  std::vector<int> classOf;   ///< class index per particle id - 1
+  std::vector<double> volumes;///< voxels per particle id - 1 (photo pixels cubed)
+  double volumeFraction = 0;
+  cv::Mat photo;              ///< CV_32FC3 sRGB, the section z = dims.z / 2
+};
+
+/// Random non-overlapping ellipsoids (random sequential addition, largest first, each drawn size
+/// placed at the first of many random spots where it neither overlaps nor touches another; sizes
+/// that find none are left out) and one axis section rendered as the photo: each class in its
+/// own colour on a plain background, with a little shading and noise as a camera would add.
+/// Particles never touch, not even diagonally, so the photo's particles are its sections.
+EllipsoidTruth makeEllipsoidTruth(const EllipsoidTruthOptions& options);
+
+} // namespace solidtex
