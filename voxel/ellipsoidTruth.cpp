@@ -125,12 +125,17 @@ void validate(const EllipsoidTruthOptions& options) {
   if (!(options.volumeFraction > 0 && options.volumeFraction < 0.5))
     throw InputError("truth volume fraction must be in (0, 0.5)");
   if (options.classes.empty()) throw InputError("truth needs at least one class of ellipsoids");
-  for (const EllipsoidClass& c : options.classes) {
-    const double largest = 2 * c.meanRadius * std::exp(2 * c.radiusSpread) * options.elongation * options.elongation;
-    if (!(c.meanRadius >= 1 && c.share > 0 && c.radiusSpread >= 0) || largest + 4 > std::min({d.x, d.y, d.z}))
-      throw InputError("each ellipsoid class needs a radius >= 1, a share > 0, and must fit the volume twice over");
-  }
   if (!(options.elongation >= 1)) throw InputError("truth elongation must be at least 1");
+  for (const EllipsoidClass& c : options.classes) {
+    if (!(c.meanRadius >= 1 && c.share > 0 && c.radiusSpread >= 0))
+      throw InputError("each ellipsoid class needs a radius of at least 1 voxel, a share above 0 and a spread of at least 0");
+    // Radii stop at two spreads; centred log stretches reach elongation^(4/3). A periodic volume
+    // must hold the longest axis with room to spare, or a particle would touch its own image.
+    const double longest = 2 * c.meanRadius * std::exp(2 * c.radiusSpread) * std::pow(options.elongation, 4.0 / 3.0);
+    if (longest + 4 > std::min({d.x, d.y, d.z}))
+      throw InputError("the largest ellipsoids (" + std::to_string(int(std::ceil(longest))) +
+                       " voxels long) do not fit the truth's smallest edge (" + std::to_string(std::min({d.x, d.y, d.z})) + ")");
+  }
 }
 
 } // namespace
