@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_set>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -90,7 +89,7 @@ class DelaunayField final : public SpaciousnessField {
 public:
   DelaunayField(Dims dims, float maxRadius)
       : dims_(dims), maxRadius_(maxRadius), capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
-        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64),
+        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64), spotSeen_(occupied_.size()),
         hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
                     (dims.z + kHintBlock - 1) / kHintBlock},
         hints_(hintBlocks_.count()) {
@@ -135,7 +134,6 @@ public:
 
   std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
     std::vector<Voxel> spots;
-    std::unordered_set<VoxelIndex> seen;  // several cells may round to one spot
     const double first = std::max(1.0, std::ceil(double(radius) * kSteps));
     for (std::size_t k = std::size_t(std::min(first, double(capKey_) + 1)); k <= capKey_; ++k) {
       std::vector<Entry>& bucket = buckets_[k];
@@ -148,10 +146,11 @@ public:
           continue;
         }
         swapEntries(bucket, taken++, j);
-        if (seen.insert(spot).second) spots.push_back(dims_.voxel(spot));
+        if (!testAndSet(spotSeen_, spot)) spots.push_back(dims_.voxel(spot));  // several cells may round to one spot
       }
       if (int(spots.size()) >= maxCount) break;
     }
+    for (const Voxel& v : spots) spotSeen_[dims_.index(v) / 64] = 0;  // the words touched, all clear again
     return spots;
   }
 
@@ -170,6 +169,13 @@ private:
   };
 
   bool isOccupied(std::size_t i) const { return (occupied_[i / 64] >> (i % 64)) & 1; }
+
+  static bool testAndSet(std::vector<std::uint64_t>& bits, std::size_t i) {
+    const std::uint64_t mask = std::uint64_t(1) << (i % 64);
+    const bool was = bits[i / 64] & mask;
+    bits[i / 64] |= mask;
+    return was;
+  }
 
   std::size_t hintIndex(const Point& p) const {
     const auto block = [](double c, int blocks) {
@@ -267,6 +273,7 @@ private:
   Delaunay triangulation_;
   std::vector<std::vector<Entry>> buckets_;  ///< bucket k: candidates of value k / kSteps
   std::vector<std::uint64_t> occupied_;      ///< one bit per voxel
+  std::vector<std::uint64_t> spotSeen_;      ///< one bit per voxel: spots bestFit has taken (all 0 between calls)
   Dims hintBlocks_;
   std::vector<Vertex> hints_;
   Vertex latest_;

@@ -9,6 +9,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "common/Error.h"
 #include "placement/detail/shapeFit.h"
 
@@ -23,6 +25,10 @@ constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
 constexpr int kRadiusSteps = 4;
 constexpr int kProgressEvery = 64;
 constexpr int kFailuresToRetire = 8;
+constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
+constexpr double kFirstPassShare = 0.85;
+constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
+constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
 
 // A (width, height) box of the photo's particles and how often 3D particles take it.
 struct WeightedPair {
@@ -128,6 +134,7 @@ public:
       }
       // Every quota met to the nearest particle, and still volume to fill: rounding up places more.
       roundUp_ = result_.particles.size() == placedBefore;
+      passShare_ = 1;
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
         if (topUpWithThePhotosShares()) continue;
         char reason[96];
@@ -157,42 +164,55 @@ private:
     return any;
   }
 
-  // Expected particle volumes per bin start from box guesses and follow the shapes made since.
+  // Expected particle volumes per bin start from a few pilot shapes of the bin and follow the shapes
+  // made since. The largest bins' counts are set before most of their shapes exist, and every voxel
+  // they take beyond plan is taken from the smallest bin, placed last: the start must be right.
   void startSizeEstimates() {
-    for (int b = 0; b < kBins; ++b) {
-      double weight = 0, boxVolume = 0;
-      for (const WeightedPair& p : pairs_[std::size_t(b)]) {
-        weight += p.weight;
-        boxVolume += p.weight * boxGuess(p);
-      }
-      boxGuess_[std::size_t(b)] = weight > 0 ? boxVolume / weight : 0;
-    }
     made_.fill(0);
     madeVoxels_.fill(0);
-    madeTotalVoxels_ = madeBoxVoxels_ = 0;
+    tbb::parallel_for(0, kBins, [&](int b) {
+      const auto& pairs = pairs_[std::size_t(b)];
+      if (pairs.empty()) return;
+      std::vector<std::size_t> all(pairs.size());
+      std::iota(all.begin(), all.end(), 0);
+      Rng rng(deriveSeed(options_.seed, kPilotStream + std::uint64_t(b) + (toppedUp_ ? kBins : 0)));
+      // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
+      double sum = 0, sumOfSquares = 0;
+      int n = 0;
+      while (n < kMaxPilotShapes) {
+        ++n;
+        const WeightedPair& pair = pairs[all[drawByWeight(pairs, all, rng)]];
+        const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng);
+        const auto voxels = double(
+            factory_.make(int(scaled(size.width)), int(scaled(size.height)), int(scaled(size.depth)), rng).voxelCount());
+        sum += voxels;
+        sumOfSquares += voxels * voxels;
+        const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
+        if (n >= kMinPilotShapes && variance / n <= kPilotPrecision * kPilotPrecision * mean * mean) break;
+      }
+      made_[std::size_t(b)] = n;
+      madeVoxels_[std::size_t(b)] = sum;
+    });
   }
 
   double scaled(int pixels) const { return std::max(1.0, std::round(pixels * scale_)); }
-  // A particle's box before its depth is known: the depth is drawn from the other pairs' sides.
-  double boxGuess(const WeightedPair& p) const { return scaled(p.width) * scaled(p.height) * (scaled(p.width) + scaled(p.height)) / 2; }
   double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
     return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
   }
 
-  // Expected voxels of a particle of bin b: the mean of the shapes made for it so far, or its box
-  // guess times the share of their boxes that shapes fill so far (about half before any is made).
+  // Expected voxels of a particle of bin b: the mean of the shapes made for it so far.
   double expectedVolume(int b) const {
-    if (made_[std::size_t(b)] > 0) return madeVoxels_[std::size_t(b)] / made_[std::size_t(b)];
-    const double fill = madeBoxVoxels_ > 0 ? madeTotalVoxels_ / madeBoxVoxels_ : 0.5;
-    return std::max(1.0, boxGuess_[std::size_t(b)] * fill);
+    return made_[std::size_t(b)] > 0 ? std::max(1.0, madeVoxels_[std::size_t(b)] / made_[std::size_t(b)]) : 1.0;
   }
 
   // The count of bin b the volume should reach: with T particles in all, bin b holds ratio_b T, and T
   // is chosen so that the open bins' missing particles fill the missing volume. Rounded to the
   // nearest: rounding every bin up would overfill the volume by half a particle of each large bin
-  // before the smallest bin, which comes last, gets its share.
+  // before the smallest bin, which comes last, gets its share. The first pass over the bins places
+  // kFirstPassShare of each; the second, with the volumes the shapes really took, the rest, so that
+  // the luck of the shapes spreads over every bin instead of landing on the smallest alone.
   int quota(int b) const {
     double missing = targetVoxels_ - double(placedVoxels_), perParticle = 0;
     for (int i = 0; i < kBins; ++i)
@@ -200,7 +220,7 @@ private:
         missing += result_.placedPerBin[std::size_t(i)] * expectedVolume(i);
         perParticle += ratio_[std::size_t(i)] * expectedVolume(i);
       }
-    const double share = ratio_[std::size_t(b)] * missing / perParticle;
+    const double share = passShare_ * ratio_[std::size_t(b)] * missing / perParticle;
     return int(roundUp_ ? std::ceil(share - 1e-9) : std::round(share));
   }
 
@@ -242,8 +262,6 @@ private:
     if (voxels == 0) return false;
     ++made_[std::size_t(bin)];
     madeVoxels_[std::size_t(bin)] += double(voxels);
-    madeTotalVoxels_ += double(voxels);
-    madeBoxVoxels_ += double(shape.dims.count());
     return place(detail::prepareShape(shape), size, bin);
   }
 
@@ -302,12 +320,13 @@ private:
   BinPairs pairs_;
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;
-  std::array<double, kBins> ratio_{}, photoRatio_{}, boxGuess_{}, madeVoxels_{};
+  std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
   bool toppedUp_ = false, roundUp_ = false;
+  double passShare_ = kFirstPassShare;
   double scale_ = 1;  ///< voxels per photo pixel of the particles made now
-  double madeTotalVoxels_ = 0, madeBoxVoxels_ = 0, targetVoxels_ = 0;
+  double targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
   PlacementResult result_;
   std::vector<Voxel> tried_, volumeVoxels_;
