@@ -85,25 +85,27 @@ std::int32_t largestVote(const std::vector<Proposal>& merged) {
 }
 
 /// The pixel whose colour gathers the largest weight under a Gaussian colour kernel. The kernel
-/// is cut at exp(-16) (it only decides near-ties beyond that), which skips most exp calls.
+/// is symmetric, so each pair is evaluated once, and cut at exp(-16) (beyond it only near-ties
+/// could change), which skips most exp calls.
 std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
   constexpr float cutoff = 16.0f;
-  std::int32_t best = -1;
-  float bestVote = -1;
-  for (const Proposal& a : merged) {
-    const float* ea = exemplar.data.data() + 3 * std::size_t(a.pixel);
-    float vote = 0;
-    for (const Proposal& b : merged) {
-      const float x = squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(b.pixel)) * invBandwidth;
-      if (x < cutoff) vote += b.weight * std::exp(-x);
-    }
-    vote += 1e-6f * a.weight;  // near-ties: the proposal's own weight
-    if (vote > bestVote) {
-      bestVote = vote;
-      best = a.pixel;
+  thread_local std::vector<float> votes;
+  votes.assign(merged.size(), 0.0f);
+  for (std::size_t a = 0; a < merged.size(); ++a) {
+    const float* ea = exemplar.data.data() + 3 * std::size_t(merged[a].pixel);
+    votes[a] += merged[a].weight * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
+    for (std::size_t b = a + 1; b < merged.size(); ++b) {
+      const float x = squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth;
+      if (x >= cutoff) continue;
+      const float k = std::exp(-x);
+      votes[a] += merged[b].weight * k;
+      votes[b] += merged[a].weight * k;
     }
   }
-  return best;
+  std::size_t best = 0;
+  for (std::size_t a = 1; a < merged.size(); ++a)
+    if (votes[a] > votes[best]) best = a;
+  return merged[best].pixel;
 }
 
 /// Han et al.'s rule: the proposal nearest in colour to the weighted average of all proposals;
