@@ -84,20 +84,27 @@ std::int32_t largestVote(const std::vector<Proposal>& merged) {
   return best;
 }
 
-/// The pixel whose colour gathers the largest weight under a Gaussian colour kernel. The kernel
-/// is symmetric, so each pair is evaluated once, and cut at exp(-16) (beyond it only near-ties
-/// could change), which skips most exp calls.
+/// The colour kernel of ColourMode: (1 - x/16)^16 for x < 16, else 0, a compact stand-in for
+/// exp(-x) (within 0.02 of it everywhere) that costs four squarings instead of a call to exp.
+inline float colourKernel(float x) {
+  if (x >= 16.0f) return 0.0f;
+  float k = 1.0f - x * (1.0f / 16.0f);
+  k *= k;
+  k *= k;
+  k *= k;
+  return k * k;
+}
+
+/// The pixel whose colour gathers the largest weight under the colour kernel; each pair is
+/// evaluated once (the kernel is symmetric).
 std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
-  constexpr float cutoff = 16.0f;
   thread_local std::vector<float> votes;
   votes.assign(merged.size(), 0.0f);
   for (std::size_t a = 0; a < merged.size(); ++a) {
     const float* ea = exemplar.data.data() + 3 * std::size_t(merged[a].pixel);
     votes[a] += merged[a].weight * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
     for (std::size_t b = a + 1; b < merged.size(); ++b) {
-      const float x = squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth;
-      if (x >= cutoff) continue;
-      const float k = std::exp(-x);
+      const float k = colourKernel(squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth);
       votes[a] += merged[b].weight * k;
       votes[b] += merged[a].weight * k;
     }
