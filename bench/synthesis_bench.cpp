@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     } else if (a == "--report-dir") reportDir = next();
     else if (a == "--slices") slicesDir = next();
     else if (a == "--no-measure") base.measure = false;
+    else if (a == "--no-colour-histogram") base.colourHistogramMatching = false;
     else if (a == "--choice") {
       const std::string c = next();
       using C = solidtex::synthesis::DiscreteSolveSettings::Choice;

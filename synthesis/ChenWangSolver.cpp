@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "synthesis/Histograms.h"
 #include "synthesis/VoxelBatches.h"
 
 namespace solidtex::synthesis {
@@ -20,19 +19,148 @@ namespace {
 
 struct Proposal {
   std::int32_t pixel;
-  double weight;
+  float weight;
 };
+
+/// Eq. 3's factor 1 / (1 + sum_j max(0, Hs_j - He_j)) for a pixel's colour.
+double colourFactor(const float* rgb, const DiscreteHistograms& h) {
+  if (!h.volumeColours) return 1.0;
+  std::array<double, 3> volume, exemplar;
+  for (int c = 0; c < 3; ++c) {
+    const int bin = h.volumeColours->binOf(rgb[c]);
+    volume[c] = h.volumeColours->density(c, bin);
+    exemplar[c] = h.exemplarColours->density(c, bin);
+  }
+  return colorHistogramWeight(1.0, volume, exemplar);
+}
+
+/// The histogram re-weighting factor of every exemplar pixel (eq. 4 times eq. 3) as the histograms
+/// stand, computed once per batch instead of once per proposal. `withoutOne` is the same with the
+/// pixel's count lowered by one: a voxel's own current pixel should not count against keeping it.
+struct PixelFactors {
+  std::vector<float> factor, withoutOne;
+};
+
+PixelFactors pixelFactors(const RgbImage& exemplar, const DiscreteHistograms& h, double scale) {
+  const std::size_t pixels = std::size_t(exemplar.pixelCount());
+  PixelFactors f;
+  f.factor.resize(pixels);
+  f.withoutOne.resize(pixels);
+  tbb::parallel_for(std::size_t(0), pixels, [&](std::size_t p) {
+    const double colour = colourFactor(exemplar.data.data() + 3 * p, h);
+    const double count = double((*h.position)[p]), theta = scale * (*h.theta)[p];
+    f.factor[p] = float(positionHistogramWeight(colour, scale * count, theta));
+    f.withoutOne[p] = float(positionHistogramWeight(colour, scale * (count - 1), theta));
+  });
+  return f;
+}
+
+/// Sorts by pixel and sums the weights of repeated pixels (coherent neighbourhoods propose the
+/// same pixel many times), so the choices below work on distinct pixels.
+void mergeRepeatedPixels(std::vector<Proposal>& proposals) {
+  std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.pixel < b.pixel; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < proposals.size(); ++i) {
+    if (out > 0 && proposals[out - 1].pixel == proposals[i].pixel) proposals[out - 1].weight += proposals[i].weight;
+    else proposals[out++] = proposals[i];
+  }
+  proposals.resize(out);
+}
+
+float squaredColourDistance(const float* a, const float* b) {
+  const float d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
+  return d0 * d0 + d1 * d1 + d2 * d2;
+}
+
+/// The pixel with the largest summed weight; ties go to the smaller pixel index.
+std::int32_t largestVote(const std::vector<Proposal>& merged) {
+  std::int32_t best = -1;
+  float bestVote = -1;
+  for (const Proposal& p : merged)
+    if (p.weight > bestVote) {
+      bestVote = p.weight;
+      best = p.pixel;
+    }
+  return best;
+}
+
+/// The colour kernel of ColourMode: (1 - x/16)^16 for x < 16, else 0, a compact stand-in for
+/// exp(-x) (within 0.02 of it everywhere) that costs four squarings instead of a call to exp.
+inline float colourKernel(float x) {
+  if (x >= 16.0f) return 0.0f;
+  float k = 1.0f - x * (1.0f / 16.0f);
+  k *= k;
+  k *= k;
+  k *= k;
+  return k * k;
+}
+
+/// The pixel whose colour gathers the largest weight under the colour kernel; each pair is
+/// evaluated once (the kernel is symmetric).
+std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
+  thread_local std::vector<float> votes;
+  votes.assign(merged.size(), 0.0f);
+  for (std::size_t a = 0; a < merged.size(); ++a) {
+    const float* ea = exemplar.data.data() + 3 * std::size_t(merged[a].pixel);
+    votes[a] += merged[a].weight * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
+    for (std::size_t b = a + 1; b < merged.size(); ++b) {
+      const float k = colourKernel(squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth);
+      votes[a] += merged[b].weight * k;
+      votes[b] += merged[a].weight * k;
+    }
+  }
+  std::size_t best = 0;
+  for (std::size_t a = 1; a < merged.size(); ++a)
+    if (votes[a] > votes[best]) best = a;
+  return merged[best].pixel;
+}
+
+/// Han et al.'s rule: the proposal nearest in colour to the weighted average of all proposals;
+/// ties go to the larger weight.
+std::int32_t nearestToAverage(const std::vector<Proposal>& merged, const RgbImage& exemplar) {
+  double sum[3] = {0, 0, 0}, total = 0;
+  for (const Proposal& p : merged) {
+    const float* e = exemplar.data.data() + 3 * std::size_t(p.pixel);
+    for (int c = 0; c < 3; ++c) sum[c] += double(p.weight) * e[c];
+    total += p.weight;
+  }
+  const float mean[3] = {float(sum[0] / total), float(sum[1] / total), float(sum[2] / total)};
+  std::int32_t best = -1;
+  float bestDistance = std::numeric_limits<float>::infinity(), bestWeight = -1;
+  for (const Proposal& p : merged) {
+    const float d = squaredColourDistance(exemplar.data.data() + 3 * std::size_t(p.pixel), mean);
+    if (d < bestDistance || (d == bestDistance && p.weight > bestWeight)) {
+      bestDistance = d;
+      bestWeight = p.weight;
+      best = p.pixel;
+    }
+  }
+  return best;
+}
+
+/// Moves the histograms from the sources in `before` to those now in the volume, for one batch.
+void refreshHistograms(const WorkVolume& volume, const std::vector<std::int32_t>& before, const RgbImage& exemplar, int batch,
+                       const DiscreteHistograms& h) {
+  forEachVoxelInBatchSequential(volume.n, batch, [&](const std::array<int, 3>&, std::size_t vi) {
+    const std::int32_t now = volume.source[vi], old = before[vi];
+    if (now == old) return;
+    if (old >= 0) --(*h.position)[old];
+    if (now >= 0) ++(*h.position)[now];
+    if (h.volumeColours) {
+      if (old >= 0) h.volumeColours->add(exemplar.data.data() + 3 * std::size_t(old), -1);
+      if (now >= 0) h.volumeColours->add(exemplar.data.data() + 3 * std::size_t(now), +1);
+    }
+  });
+}
 
 } // namespace
 
 void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex, const SliceMatches& matches,
-                   const std::vector<double>& theta, std::vector<std::int64_t>& positionHistogram, const DiscreteSolveSettings& settings) {
-  const int n = volume.n;
+                   const DiscreteHistograms& histograms, const DiscreteSolveSettings& settings) {
   const int W = exemplar.width;
   const double exponent = (settings.irlsExponent - 2.0) / 2.0;  // on squared distances
   const double eps = settings.irlsEpsilon * ex.shape.dims();
-  const double scale = settings.histogramScale;
-  const double invBandwidth = 1.0 / settings.modeBandwidth;
+  const float invBandwidth = float(1.0 / settings.modeBandwidth);
   if (volume.source.size() != volume.count()) volume.source.assign(volume.count(), -1);
   // IRLS weight per matched neighbourhood, computed once.
   std::vector<float> irls(matches.distance.size());
@@ -40,80 +168,32 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
 
   const std::vector<std::int32_t> before = volume.source;
   for (int batch = 0; batch < kParityBatches; ++batch) {
-    forEachVoxelInBatch(n, batch, [&](const std::array<int, 3>& v, std::size_t vi) {
+    const PixelFactors factors = pixelFactors(exemplar, histograms, settings.histogramScale);
+    forEachVoxelInBatch(volume.n, batch, [&](const std::array<int, 3>& v, std::size_t vi) {
       thread_local std::vector<Proposal> proposals;
       proposals.clear();
-      double sum[3] = {0, 0, 0}, total = 0;
       const std::int32_t current = volume.source[vi];
       forEachCoveringCentre(matches.grid, ex.shape, v, [&](std::size_t id, int i, int j) {
         const std::int32_t m = matches.match[id];
         if (m < 0) return;
         const std::int32_t pixel = (ex.centreY(m) + j) * W + (ex.centreX(m) + i);
-        const double h = double(positionHistogram[pixel]) - (pixel == current ? 1 : 0);
-        const double w = positionHistogramWeight(irls[id], scale * h, scale * theta[pixel]);
-        const float* e = exemplar.data.data() + 3 * std::size_t(pixel);
-        for (int c = 0; c < 3; ++c) sum[c] += w * e[c];
-        total += w;
-        proposals.push_back({pixel, w});
+        const float factor = pixel == current ? factors.withoutOne[pixel] : factors.factor[pixel];
+        proposals.push_back({pixel, irls[id] * factor});
       });
-      if (proposals.empty() || total <= 0) return;
+      if (proposals.empty()) return;
+      mergeRepeatedPixels(proposals);
       std::int32_t best = -1;
-      if (settings.choice == DiscreteSolveSettings::Choice::LargestVote) {
-        std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.pixel < b.pixel; });
-        double bestVote = -1;
-        for (std::size_t a = 0; a < proposals.size();) {
-          double vote = 0;
-          std::size_t b = a;
-          for (; b < proposals.size() && proposals[b].pixel == proposals[a].pixel; ++b) vote += proposals[b].weight;
-          if (vote > bestVote) {
-            bestVote = vote;
-            best = proposals[a].pixel;
-          }
-          a = b;
-        }
-      } else if (settings.choice == DiscreteSolveSettings::Choice::ColourMode) {
-        double bestVote = -1;
-        for (const Proposal& a : proposals) {
-          const float* ea = exemplar.data.data() + 3 * std::size_t(a.pixel);
-          double vote = 0;
-          for (const Proposal& b : proposals) {
-            const float* eb = exemplar.data.data() + 3 * std::size_t(b.pixel);
-            const double d = (ea[0] - eb[0]) * (ea[0] - eb[0]) + (ea[1] - eb[1]) * (ea[1] - eb[1]) + (ea[2] - eb[2]) * (ea[2] - eb[2]);
-            vote += b.weight * std::exp(-d * invBandwidth);
-          }
-          vote += 1e-9 * a.weight;  // ties: the proposal's own weight
-          if (vote > bestVote || (vote == bestVote && a.pixel < best)) {
-            bestVote = vote;
-            best = a.pixel;
-          }
-        }
-      } else {
-        const double mean[3] = {sum[0] / total, sum[1] / total, sum[2] / total};
-        double bestDist = std::numeric_limits<double>::infinity(), bestWeight = -1;
-        for (const Proposal& p : proposals) {
-          const float* e = exemplar.data.data() + 3 * std::size_t(p.pixel);
-          double dist = 0;
-          for (int c = 0; c < 3; ++c) dist += (e[c] - mean[c]) * (e[c] - mean[c]);
-          if (dist < bestDist || (dist == bestDist && (p.weight > bestWeight || (p.weight == bestWeight && p.pixel < best)))) {
-            bestDist = dist;
-            bestWeight = p.weight;
-            best = p.pixel;
-          }
-        }
+      switch (settings.choice) {
+        case DiscreteSolveSettings::Choice::LargestVote: best = largestVote(proposals); break;
+        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth); break;
+        case DiscreteSolveSettings::Choice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
       }
+      if (best < 0) return;
       volume.source[vi] = best;
       const float* e = exemplar.data.data() + 3 * std::size_t(best);
-      float* out = volume.at(vi);
-      out[0] = e[0];
-      out[1] = e[1];
-      out[2] = e[2];
+      std::copy(e, e + 3, volume.at(vi));
     });
-    forEachVoxelInBatchSequential(n, batch, [&](const std::array<int, 3>&, std::size_t vi) {
-      const std::int32_t now = volume.source[vi], old = before[vi];
-      if (now == old) return;
-      if (old >= 0) --positionHistogram[old];
-      if (now >= 0) ++positionHistogram[now];
-    });
+    refreshHistograms(volume, before, exemplar, batch, histograms);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "synthesis/ExemplarNeighborhoods.h"
+#include "synthesis/Histograms.h"
 #include "synthesis/RgbImage.h"
 #include "synthesis/SliceMatches.h"
 #include "synthesis/WorkVolume.h"
@@ -24,16 +25,26 @@ struct DiscreteSolveSettings {
   double modeBandwidth = 0.01;  ///< ColourMode kernel: exp(-||a - b||^2 / bandwidth), sRGB units
 };
 
-/// Chen–Wang optimisation phase (section 4.2, discrete solver of Han et al.): every voxel computes
-/// the weighted average (eq. 2) of the exemplar pixels e_{u,i,v} proposed by the slice neighbourhoods
-/// covering it, with IRLS weights re-weighted by the position histogram (eq. 4), then copies the
-/// proposed pixel whose colour is nearest to that average (colour and source position).
-/// `positionHistogram` (voxels per exemplar pixel) is kept in step with volume.source; `theta` is
-/// the expected count per pixel. Voxels are updated in 8 parity batches, the histogram refreshed in
-/// between. Deterministic for any thread count.
+/// The global statistics the discrete solver re-weights with and keeps in step with the volume.
+struct DiscreteHistograms {
+  const std::vector<double>* theta = nullptr;      ///< expected voxels per exemplar pixel (eq. 4)
+  std::vector<std::int64_t>* position = nullptr;   ///< voxels copying each exemplar pixel
+  /// Per-channel colour histograms of the exemplar and of the volume for eq. 3, or null for none.
+  /// Eq. 4 alone only penalises single over-used pixels: when a whole colour class is under-used
+  /// while the majority class still has unused pixels (two flat colours, thin veins), nothing stops
+  /// the class from eroding. Eq. 3 sees the class.
+  const ChannelHistograms* exemplarColours = nullptr;
+  ChannelHistograms* volumeColours = nullptr;
+};
+
+/// Chen–Wang optimisation phase (section 4.2, discrete solver of Han et al.): every voxel weighs
+/// the exemplar pixels e_{u,i,v} proposed by the slice neighbourhoods covering it, with IRLS
+/// weights re-weighted by the position histogram (eq. 4) and, when given, the colour histograms
+/// (eq. 3), then copies one proposed pixel (colour and source position) as settings.choice says.
+/// The histograms are kept in step with volume.source. Voxels are updated in 8 parity batches, the
+/// histograms refreshed in between. Deterministic for any thread count.
 void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& neighborhoods, const SliceMatches& matches,
-                   const std::vector<double>& theta, std::vector<std::int64_t>& positionHistogram,
-                   const DiscreteSolveSettings& settings = {});
+                   const DiscreteHistograms& histograms, const DiscreteSolveSettings& settings = {});
 
 /// Counts how many voxels copy each exemplar pixel (`pixels` bins).
 std::vector<std::int64_t> positionHistogramOf(const std::vector<std::int32_t>& source, int pixels);

@@ -1,5 +1,6 @@
 #include "synthesis/SliceMatches.h"
 
+#include <algorithm>
 #include <limits>
 
 #include <tbb/parallel_for.h>
@@ -12,15 +13,52 @@ namespace {
 
 struct Scratch {
   Eigen::VectorXf full, centred, reduced;
+  std::vector<std::int32_t> candidates;
 };
 
+/// Squared distance with four independent partial sums, so the compiler can keep them in one
+/// vector register (a single running sum serialises every addition).
 inline float squaredDistance(const float* a, const float* b, int d) {
-  float s = 0;
-  for (int c = 0; c < d; ++c) {
+  float part[4] = {0, 0, 0, 0};
+  int c = 0;
+  for (; c + 4 <= d; c += 4)
+    for (int l = 0; l < 4; ++l) {
+      const float t = a[c + l] - b[c + l];
+      part[l] += t * t;
+    }
+  float s = (part[0] + part[1]) + (part[2] + part[3]);
+  for (; c < d; ++c) {
     const float t = a[c] - b[c];
     s += t * t;
   }
   return s;
+}
+
+/// k-coherence candidates of the slice neighbourhood at c: for every slice neighbour u within
+/// `radius`, the similarity set of the exemplar neighbourhood that u's source pixel implies,
+/// shifted back by u's offset. Each set is taken once: in coherent regions all neighbours imply
+/// the same set. (Ids may still repeat across different sets; considering one twice is harmless.)
+void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& ex, const SimilaritySets& sets, int axis,
+                         const std::array<int, 3>& c, int radius, std::vector<std::int32_t>& out) {
+  out.clear();
+  const SliceAxes sa = sliceAxes(axis);
+  std::array<int, 3> u = c;
+  for (int dj = -radius; dj <= radius; ++dj) {
+    u[sa.w] = volume.wrap(c[sa.w] + dj);
+    for (int di = -radius; di <= radius; ++di) {
+      u[sa.u] = volume.wrap(c[sa.u] + di);
+      const std::int32_t p = volume.source[volume.index(u[0], u[1], u[2])];
+      const int px = p % ex.exemplarWidth, py = p / ex.exemplarWidth;
+      const std::int32_t set = ex.clampedIndexOf(px - di, py - dj);
+      if (std::find(out.begin(), out.end(), set) == out.end()) out.push_back(set);
+    }
+  }
+  const std::size_t distinctSets = out.size();
+  for (std::size_t q = 0; q < distinctSets; ++q) {
+    const std::int32_t* set = sets.of(out[q]);
+    out.insert(out.end(), set, set + sets.k);
+  }
+  out.erase(out.begin(), out.begin() + std::ptrdiff_t(distinctSets));
 }
 
 } // namespace
@@ -72,19 +110,8 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
         if (settings.exhaustive || (!useSets && !settings.tree)) {
           for (int m = 0; m < M; ++m) consider(m);
         } else if (useSets) {
-          const SliceAxes sa = sliceAxes(axis);
-          const int R = settings.coherenceRadius;
-          std::array<int, 3> u = c;
-          for (int dj = -R; dj <= R; ++dj) {
-            u[sa.w] = volume.wrap(c[sa.w] + dj);
-            for (int di = -R; di <= R; ++di) {
-              u[sa.u] = volume.wrap(c[sa.u] + di);
-              const std::int32_t p = volume.source[volume.index(u[0], u[1], u[2])];
-              const int px = p % ex.exemplarWidth, py = p / ex.exemplarWidth;
-              const std::int32_t* set = settings.sets->of(ex.clampedIndexOf(px - di, py - dj));
-              for (int q = 0; q < settings.sets->k; ++q) consider(set[q]);
-            }
-          }
+          coherenceCandidates(volume, ex, *settings.sets, axis, c, settings.coherenceRadius, s.candidates);
+          for (std::int32_t m : s.candidates) consider(m);
         } else {
           consider(settings.tree->nearest(y));
         }

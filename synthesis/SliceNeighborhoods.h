@@ -56,22 +56,23 @@ struct SliceCentreGrid {
 
 /// Calls f(centreId, i, j) for every matched slice neighbourhood (all three axes) that covers voxel
 /// `v`, where (i, j) is v's offset from that centre in slice coordinates (exemplar x, y).
+/// Visits only offsets whose centre lies on the grid (every step-th), in increasing j, then i.
 template <class F>
 void forEachCoveringCentre(const SliceCentreGrid& grid, const NeighborhoodShape& shape, const std::array<int, 3>& v, F&& f) {
-  const int n = grid.n;
+  const int n = grid.n, step = grid.step;
+  // The smallest offset >= lo whose centre coordinate (x - offset) is a multiple of step.
+  auto firstOffset = [&](int x) {
+    int r = (x - shape.lo()) % step;
+    return shape.lo() + r;
+  };
+  auto wrap = [n](int x) { return x < 0 ? x + n : (x >= n ? x - n : x); };
   for (int axis = 0; axis < 3; ++axis) {
     const SliceAxes s = sliceAxes(axis);
     std::array<int, 3> c = v;
-    for (int j = shape.lo(); j <= shape.hi(); ++j) {
-      int cw = (v[s.w] - j) % n;
-      if (cw < 0) cw += n;
-      if (cw % grid.step) continue;
-      c[s.w] = cw;
-      for (int i = shape.lo(); i <= shape.hi(); ++i) {
-        int cu = (v[s.u] - i) % n;
-        if (cu < 0) cu += n;
-        if (cu % grid.step) continue;
-        c[s.u] = cu;
+    for (int j = firstOffset(v[s.w]); j <= shape.hi(); j += step) {
+      c[s.w] = wrap(v[s.w] - j);
+      for (int i = firstOffset(v[s.u]); i <= shape.hi(); i += step) {
+        c[s.u] = wrap(v[s.u] - i);
         f(grid.id(axis, c), i, j);
       }
     }

@@ -123,6 +123,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   report["k"] = o.k;
   report["iterations"] = o.iterations;
   report["pcaDims"] = o.pcaDims;
+  if (chenWang) report["colourHistogramMatching"] = o.colourHistogramMatching;
   report["seed"] = o.seed;
   report["control"] = bool(o.control);
   report["exemplar"] = {{"name", o.exemplarName}, {"width", finest.width}, {"height", finest.height}};
@@ -154,8 +155,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     std::vector<std::int64_t> positionHistogram;
     if (chenWang) positionHistogram = positionHistogramOf(volume.source, ex.pixelCount());
     const ChannelHistograms exemplarHistogram = channelHistograms(ex.data.data(), std::size_t(ex.pixelCount()), o.histogramBins);
-    ChannelHistograms volumeHistogram(o.histogramBins);
-    if (!chenWang) volumeHistogram = channelHistograms(volume.rgb.data(), volume.count(), o.histogramBins);
+    ChannelHistograms volumeHistogram = channelHistograms(volume.rgb.data(), volume.count(), o.histogramBins);
     indexHistogram.assign(en.count(), 0);
     indexCount = en.count();
 
@@ -180,7 +180,12 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
         solve.modeBandwidth = o.modeBandwidth;
         const double meanTheta = double(volume.count()) / ex.pixelCount();
         solve.histogramScale = o.histogramReferenceCount > 0 ? o.histogramReferenceCount / meanTheta : 1.0;
-        discreteSolve(volume, ex, en, matches, theta, positionHistogram, solve);
+        DiscreteHistograms histograms{&theta, &positionHistogram};
+        if (o.colourHistogramMatching) {
+          histograms.exemplarColours = &exemplarHistogram;
+          histograms.volumeColours = &volumeHistogram;
+        }
+        discreteSolve(volume, ex, en, matches, histograms, solve);
       }
       else weightedAverageSolve(volume, ex, en, matches, exemplarHistogram, volumeHistogram, {o.irlsExponent});
       const double solveSeconds = secondsSince(t1);
