@@ -10,7 +10,7 @@ seeds=("$@")
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-truths=("default|" "spheres|--elongation 1" "elongated|--elongation 1.6" "crowded|--fraction 0.3"
+truths=("default|" "spheres|--elongation 1" "elongated|--elongation 1.5" "crowded|--fraction 0.3"
         "half large|--large-share 0.5 --spread 0.3" "wide sizes|--small-radius 5 --large-radius 16")
 echo "| truth | seed | photo particles | sections KS | sections volume W1/mean | bbox KS | bbox volume W1/mean | volume fraction (sections) | photo fraction |"
 echo "|---|---|---|---|---|---|---|---|---|"

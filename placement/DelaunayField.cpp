@@ -110,8 +110,10 @@ public:
       const std::size_t i = dims_.index(v);
       occupied_[i / 64] |= std::uint64_t(1) << (i % 64);
     }
-    std::vector<Point> points;
-    for (const Voxel& v : boundaryVoxels(voxels)) points.push_back(pointOf(v));
+    points_.clear();
+    for (const Voxel& v : boundaryVoxels(voxels))
+      if (facesFreeSpace(v)) points_.push_back(pointOf(v));
+    std::vector<Point>& points = points_;
     CGAL::spatial_sort(points.begin(), points.end(), Kernel());
     Cell hint = points.empty() ? Cell() : hintCell(points.front());
     pending_.clear();
@@ -169,6 +171,15 @@ private:
   };
 
   bool isOccupied(std::size_t i) const { return (occupied_[i / 64] >> (i % 64)) & 1; }
+
+  // The nearest occupied voxel to any free voxel can be taken among those with a free 6-neighbour
+  // (the argument of boundaryVoxels, applied to all particles together): a boundary voxel pressed
+  // against other particles or a wall on every open side adds nothing but points to triangulate.
+  bool facesFreeSpace(const Voxel& v) const {
+    const auto free = [&](int i, int j, int k) { return dims_.contains(i, j, k) && !isOccupied(dims_.index(i, j, k)); };
+    return free(v.x - 1, v.y, v.z) || free(v.x + 1, v.y, v.z) || free(v.x, v.y - 1, v.z) || free(v.x, v.y + 1, v.z) ||
+           free(v.x, v.y, v.z - 1) || free(v.x, v.y, v.z + 1);
+  }
 
   static bool testAndSet(std::vector<std::uint64_t>& bits, std::size_t i) {
     const std::uint64_t mask = std::uint64_t(1) << (i % 64);
@@ -279,6 +290,7 @@ private:
   Vertex latest_;
   std::vector<Delaunay::Facet> facets_;
   std::vector<Cell> conflicts_, pending_;
+  std::vector<Point> points_;
 };
 
 } // namespace

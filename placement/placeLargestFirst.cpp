@@ -126,7 +126,7 @@ public:
     for (;;) {
       const std::size_t placedBefore = result_.particles.size();
       for (int b = kBins - 1; b >= 0; --b) {
-        while (open_[std::size_t(b)] && !fractionReached() && !limitReached() &&
+        while (open_[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
                result_.placedPerBin[std::size_t(b)] < quota(b))
           if (!attempt(b) && pairs_[std::size_t(b)].empty()) open_[std::size_t(b)] = false;
         if (fractionReached()) return finish("area fraction reached");
@@ -200,6 +200,16 @@ private:
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
     return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
+  }
+
+  // A particle of bin b would overshoot the photo's fraction by more than it fills while a smaller bin
+  // could still fill the rest: it waits (the volume must end as close to the fraction as it can).
+  bool overfills(int b) const {
+    const double missing = targetVoxels_ - double(placedVoxels_);
+    if (expectedVolume(b) <= 2 * missing) return false;
+    for (int i = 0; i < b; ++i)
+      if (open_[std::size_t(i)]) return true;
+    return false;
   }
 
   // Expected voxels of a particle of bin b: the mean of the shapes made for it so far.
