@@ -206,7 +206,7 @@ private:
   // could still fill the rest: it waits (the volume must end as close to the fraction as it can).
   bool overfills(int b) const {
     const double missing = targetVoxels_ - double(placedVoxels_);
-    if (expectedVolume(b) <= 2 * missing) return false;
+    if (roundUp_ || expectedVolume(b) <= 2 * missing) return false;  // after a pass that placed nothing, anything goes
     for (int i = 0; i < b; ++i)
       if (open_[std::size_t(i)]) return true;
     return false;

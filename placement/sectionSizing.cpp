@@ -14,7 +14,7 @@ namespace solidtex {
 namespace {
 
 constexpr std::uint64_t kSectionStream = 0x6b65726e;  // "kern"
-constexpr double kSampleSide = 32;  // voxels of the largest particle box the sections are measured on
+constexpr double kSampleSide = 64;  // voxels of the largest particle box the sections are measured on
 constexpr double kSmallestFactor = 1, kLargestFactor = 2, kFactorStep = 0.02;
 // Light: on sphere kernels with a few hundred photo particles, counting noise, not the smoothing's
 // bias, limits the unfolding (stronger smoothing flattens a two-sized truth into one broad hump).
@@ -22,6 +22,7 @@ constexpr double kSmoothing = 0.05;
 // Factors whose predicted sections are this close (KS) to the best one's fit as well, given the
 // photo's own counting noise (a KS of about 0.87 / sqrt(n) between two photos of n particles).
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
+constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
 
 // The particles the photo's histogram counts: those not cut by its border, or all when every one is.
 std::vector<std::size_t> statisticalParticles(const ExemplarStats& stats) {
@@ -102,24 +103,33 @@ std::vector<int> samplesPerClass(const std::vector<SectionSample>& samples, int 
 
 // KS between the photo's areas and the sections predicted for 3D class shares x at `factor`.
 double predictedKs(const std::vector<SectionSample>& samples, const std::vector<int>& perClass, double minArea,
-                   double factor, const Eigen::VectorXd& x, const std::vector<double>& sortedPhotoAreas) {
+                   double factor, const Eigen::VectorXd& x, const std::vector<std::pair<double, double>>& photo) {
   std::vector<std::pair<double, double>> predicted;  // (area, weight)
   forEachSection(samples, perClass, minArea, factor, [&](int c, double area, double weight) {
     if (x[c] > 0) predicted.emplace_back(area, x[c] * weight);
   });
-  if (predicted.empty() || sortedPhotoAreas.empty()) return 1;
+  if (predicted.empty() || photo.empty()) return 1;
   std::sort(predicted.begin(), predicted.end());
-  double total = 0;
+  double total = 0, photoTotal = 0;
   for (const auto& p : predicted) total += p.second;
-  double ks = 0, cumulative = 0;
+  for (const auto& p : photo) photoTotal += p.second;
+  double ks = 0, cumulative = 0, photoCumulative = 0;
   std::size_t next = 0;
-  const double n = double(sortedPhotoAreas.size());
-  for (std::size_t i = 0; i < sortedPhotoAreas.size(); ++i) {
-    const double a = sortedPhotoAreas[i];
-    while (next < predicted.size() && predicted[next].first <= a) cumulative += predicted[next++].second;
-    ks = std::max({ks, std::abs(cumulative / total - double(i + 1) / n), std::abs(cumulative / total - double(i) / n)});
+  for (const auto& [area, weight] : photo) {
+    while (next < predicted.size() && predicted[next].first <= area) cumulative += predicted[next++].second;
+    const double before = photoCumulative / photoTotal;
+    photoCumulative += weight;
+    ks = std::max({ks, std::abs(cumulative / total - photoCumulative / photoTotal), std::abs(cumulative / total - before)});
   }
   return ks;
+}
+
+// Miles and Lantuejoul: a particle of box w x h lies wholly inside a W x H photo for only
+// (W - w)(H - h) of its positions, so the photo's border drops large particles more often than small
+// ones; weighting each inner particle by the inverse restores the sections' true proportions.
+double borderCorrection(const ExemplarStats& stats, const Particle2D& p) {
+  const double free = double(stats.imageWidth - p.box.width) * double(stats.imageHeight - p.box.height);
+  return free > 0 && stats.imageWidth > 0 ? double(stats.imageWidth) * stats.imageHeight / free : 1.0;
 }
 
 } // namespace
@@ -182,9 +192,16 @@ std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, co
 
 Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
                               double sizeFactor) {
+  const std::vector<int> perClass = samplesPerClass(samples, classes.count());
   Eigen::MatrixXd kernel = Eigen::MatrixXd::Zero(classes.count(), classes.count());
-  forEachSection(samples, samplesPerClass(samples, classes.count()), minArea, sizeFactor,
+  forEachSection(samples, perClass, minArea, sizeFactor,
                  [&](int c, double area, double weight) { kernel(std::max(0, classes.classOfArea(area)), c) += weight; });
+  // A class whose sections mostly fall below the photo's specks is all but invisible in it: the
+  // photo cannot say how many there are, and an unfolding would keep whatever it started with.
+  Eigen::VectorXd cut = Eigen::VectorXd::Zero(classes.count());
+  forEachSection(samples, perClass, 0, sizeFactor, [&](int c, double, double weight) { cut[c] += weight; });
+  for (int c = 0; c < classes.count(); ++c)
+    if (kernel.col(c).sum() < kMinVisibleShare * cut[c]) kernel.col(c).setZero();
   return kernel;
 }
 
@@ -220,13 +237,14 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
   const std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
   const std::vector<int> perClass = samplesPerClass(samples, classes.count());
   Eigen::VectorXd observed = Eigen::VectorXd::Zero(classes.count());
-  std::vector<double> photoAreas;
+  std::vector<std::pair<double, double>> photo;  // (area, weight)
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     if (classes.classOf[i] >= 0) {
-      observed[classes.classOf[i]] += 1;
-      photoAreas.push_back(stats.particles[i].area);
+      const double weight = borderCorrection(stats, stats.particles[i]);
+      observed[classes.classOf[i]] += weight;
+      photo.emplace_back(stats.particles[i].area, weight);
     }
-  std::sort(photoAreas.begin(), photoAreas.end());
+  std::sort(photo.begin(), photo.end());
   const Eigen::VectorXd photoCounts = observed;
   observed /= observed.sum();
 
@@ -238,14 +256,14 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
   for (int step = 0; kSmallestFactor + step * kFactorStep <= kLargestFactor + 1e-9; ++step) {
     const double factor = kSmallestFactor + step * kFactorStep;
     const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, stats.minArea, factor), observed);
-    fits.push_back({factor, predictedKs(samples, perClass, stats.minArea, factor, x, photoAreas), x});
+    fits.push_back({factor, predictedKs(samples, perClass, stats.minArea, factor, x, photo), x});
   }
   // Larger particles with their shares shifted to smaller classes give much the same sections, so
   // many factors fit about as well; the smallest of them keeps the largest classes for the largest
   // particles instead of inflating them beyond any the photo implies.
   double bestKs = INFINITY;
   for (const Fit& f : fits) bestKs = std::min(bestKs, f.ks);
-  const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photoAreas.size())));
+  const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.size())));
   const Fit& chosen = *std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.ks <= bestKs + tolerance; });
   SectionSizing best;
   best.sizeFactor = chosen.factor;
@@ -255,11 +273,12 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
     best.sizeFactor = 1;
     bestShares = observed;
   }
-  // A class's share goes to its photo particles evenly, so within a class the photo's sizes recur.
+  // A class's share goes to its photo particles as the border correction weighs them, so within a
+  // class the photo's sizes recur in their true proportions.
   best.particleWeights.assign(stats.particles.size(), 0);
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     if (const int c = classes.classOf[i]; c >= 0) {
-      best.particleWeights[i] = bestShares[c] / photoCounts[c];
+      best.particleWeights[i] = bestShares[c] * borderCorrection(stats, stats.particles[i]) / photoCounts[c];
       best.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += best.particleWeights[i];
     }
   return best;

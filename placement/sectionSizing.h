@@ -42,7 +42,7 @@ struct SectionSample {
 };
 
 /// Random sections of factory particles made for each class, `shapesPerClass` shapes cut by
-/// `planesPerShape` planes each, measured on shapes whose largest box side is at most 32 voxels
+/// `planesPerShape` planes each, measured on shapes whose largest box side is at most 64 voxels
 /// (enough to resolve the areas, whatever the volume's size). Parallel, the same at any thread count.
 std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, const ParticleFactory& factory,
                                                   const AreaClasses& classes, double voxelsPerPixel,
