@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include <tbb/parallel_for.h>
 
@@ -231,57 +230,73 @@ Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::Vecto
   return x;
 }
 
-SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                               std::uint64_t seed) {
-  const AreaClasses classes = areaClassesOf(stats);
-  const std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
-  const std::vector<int> perClass = samplesPerClass(samples, classes.count());
-  Eigen::VectorXd observed = Eigen::VectorXd::Zero(classes.count());
-  std::vector<std::pair<double, double>> photo;  // (area, weight)
+namespace {
+
+// The photo's counted particles per class and their (area, weight) sorted by area, each weighted
+// for the border that drops large ones more often.
+struct PhotoSections {
+  Eigen::VectorXd perClass;
+  std::vector<std::pair<double, double>> areas;
+};
+
+PhotoSections photoSectionsOf(const ExemplarStats& stats, const AreaClasses& classes) {
+  PhotoSections out{Eigen::VectorXd::Zero(classes.count()), {}};
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     if (classes.classOf[i] >= 0) {
       const double weight = borderCorrection(stats, stats.particles[i]);
-      observed[classes.classOf[i]] += weight;
-      photo.emplace_back(stats.particles[i].area, weight);
+      out.perClass[classes.classOf[i]] += weight;
+      out.areas.emplace_back(stats.particles[i].area, weight);
     }
-  std::sort(photo.begin(), photo.end());
-  const Eigen::VectorXd photoCounts = observed;
-  observed /= observed.sum();
+  std::sort(out.areas.begin(), out.areas.end());
+  return out;
+}
 
-  struct Fit {
-    double factor, ks;
-    Eigen::VectorXd shares;
-  };
+struct Fit {
+  double factor = 1, ks = 1;
+  Eigen::VectorXd shares;
+};
+
+// Larger particles with their shares shifted to smaller classes give much the same sections, so
+// many factors fit about as well; the smallest of them keeps the largest classes for the largest
+// particles instead of inflating them beyond any the photo implies.
+Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
+                    const PhotoSections& photo) {
+  const std::vector<int> perClass = samplesPerClass(samples, classes.count());
+  const Eigen::VectorXd observed = photo.perClass / photo.perClass.sum();
   std::vector<Fit> fits;
   for (int step = 0; kSmallestFactor + step * kFactorStep <= kLargestFactor + 1e-9; ++step) {
     const double factor = kSmallestFactor + step * kFactorStep;
-    const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, stats.minArea, factor), observed);
-    fits.push_back({factor, predictedKs(samples, perClass, stats.minArea, factor, x, photo), x});
+    const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, minArea, factor), observed);
+    fits.push_back({factor, predictedKs(samples, perClass, minArea, factor, x, photo.areas), x});
   }
-  // Larger particles with their shares shifted to smaller classes give much the same sections, so
-  // many factors fit about as well; the smallest of them keeps the largest classes for the largest
-  // particles instead of inflating them beyond any the photo implies.
   double bestKs = INFINITY;
   for (const Fit& f : fits) bestKs = std::min(bestKs, f.ks);
-  const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.size())));
-  const Fit& chosen = *std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.ks <= bestKs + tolerance; });
-  SectionSizing best;
-  best.sizeFactor = chosen.factor;
-  best.predictedKs = chosen.ks;
-  Eigen::VectorXd bestShares = chosen.shares;
-  if (!(bestShares.size() > 0 && bestShares.sum() > 0)) {  // no shape was cut above the photo's specks
-    best.sizeFactor = 1;
-    bestShares = observed;
-  }
+  const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.areas.size())));
+  Fit chosen = *std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.ks <= bestKs + tolerance; });
+  if (!(chosen.shares.sum() > 0)) chosen = {1, 1, observed};  // no shape was cut above the photo's specks
+  return chosen;
+}
+
+} // namespace
+
+SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
+                               std::uint64_t seed) {
+  const AreaClasses classes = areaClassesOf(stats);
+  const PhotoSections photo = photoSectionsOf(stats, classes);
+  const Fit fit = smallestGoodFit(sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed), classes,
+                                  stats.minArea, photo);
+  SectionSizing sizing;
+  sizing.sizeFactor = fit.factor;
+  sizing.predictedKs = fit.ks;
   // A class's share goes to its photo particles as the border correction weighs them, so within a
   // class the photo's sizes recur in their true proportions.
-  best.particleWeights.assign(stats.particles.size(), 0);
+  sizing.particleWeights.assign(stats.particles.size(), 0);
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     if (const int c = classes.classOf[i]; c >= 0) {
-      best.particleWeights[i] = bestShares[c] * borderCorrection(stats, stats.particles[i]) / photoCounts[c];
-      best.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += best.particleWeights[i];
+      sizing.particleWeights[i] = fit.shares[c] * borderCorrection(stats, stats.particles[i]) / photo.perClass[c];
+      sizing.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += sizing.particleWeights[i];
     }
-  return best;
+  return sizing;
 }
 
 } // namespace solidtex
