@@ -86,9 +86,10 @@ std::int32_t largestVote(const std::vector<Proposal>& merged) {
 
 /// The colour kernel of ColourMode: (1 - x/16)^16 for x < 16, else 0, a compact stand-in for
 /// exp(-x) (within 0.02 of it everywhere) that costs four squarings instead of a call to exp.
+/// Branch-free (the cut-off is a max): which pairs fall beyond it is unpredictable. x/16 is exact,
+/// so 1 - x/16 <= 0 exactly when x >= 16.
 inline float colourKernel(float x) {
-  if (x >= 16.0f) return 0.0f;
-  float k = 1.0f - x * (1.0f / 16.0f);
+  float k = std::max(0.0f, 1.0f - x * (1.0f / 16.0f));
   k *= k;
   k *= k;
   k *= k;
@@ -96,21 +97,28 @@ inline float colourKernel(float x) {
 }
 
 /// The pixel whose colour gathers the largest weight under the colour kernel; each pair is
-/// evaluated once (the kernel is symmetric).
+/// evaluated once (the kernel is symmetric). The proposals' colours are copied side by side first
+/// (the inner loop would otherwise chase exemplar indices), and a's own vote is summed in a
+/// register; the additions happen in the same order either way.
 std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
-  thread_local std::vector<float> votes;
-  votes.assign(merged.size(), 0.0f);
-  for (std::size_t a = 0; a < merged.size(); ++a) {
-    const float* ea = exemplar.data.data() + 3 * std::size_t(merged[a].pixel);
-    votes[a] += merged[a].weight * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
-    for (std::size_t b = a + 1; b < merged.size(); ++b) {
-      const float k = colourKernel(squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth);
-      votes[a] += merged[b].weight * k;
-      votes[b] += merged[a].weight * k;
+  thread_local std::vector<float> votes, colours;
+  const std::size_t n = merged.size();
+  votes.assign(n, 0.0f);
+  colours.resize(3 * n);
+  for (std::size_t a = 0; a < n; ++a) std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3, colours.begin() + std::ptrdiff_t(3 * a));
+  for (std::size_t a = 0; a < n; ++a) {
+    const float* ea = colours.data() + 3 * a;
+    const float wa = merged[a].weight;
+    float vote = votes[a] + wa * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const float k = colourKernel(squaredColourDistance(ea, colours.data() + 3 * b) * invBandwidth);
+      vote += merged[b].weight * k;
+      votes[b] += wa * k;
     }
+    votes[a] = vote;
   }
   std::size_t best = 0;
-  for (std::size_t a = 1; a < merged.size(); ++a)
+  for (std::size_t a = 1; a < n; ++a)
     if (votes[a] > votes[best]) best = a;
   return merged[best].pixel;
 }
