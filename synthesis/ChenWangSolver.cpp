@@ -22,6 +22,12 @@ struct Proposal {
   float weight;
 };
 
+/// Per-thread working memory of one voxel's choice.
+struct VoxelScratch {
+  std::vector<Proposal> proposals;
+  std::vector<float> votes, colours;
+};
+
 /// Eq. 3's factor 1 / (1 + sum_j max(0, Hs_j - He_j)) for a pixel's colour.
 double colourFactor(const float* rgb, const DiscreteHistograms& h) {
   if (!h.volumeColours) return 1.0;
@@ -56,9 +62,15 @@ PixelFactors pixelFactors(const RgbImage& exemplar, const DiscreteHistograms& h,
 }
 
 /// Sorts by pixel and sums the weights of repeated pixels (coherent neighbourhoods propose the
-/// same pixel many times), so the choices below work on distinct pixels.
+/// same pixel many times), so the choices below work on distinct pixels. Insertion sort: a voxel
+/// has a dozen or so proposals, too few for std::sort's machinery to pay off.
 void mergeRepeatedPixels(std::vector<Proposal>& proposals) {
-  std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.pixel < b.pixel; });
+  for (std::size_t i = 1; i < proposals.size(); ++i) {
+    const Proposal p = proposals[i];
+    std::size_t j = i;
+    for (; j > 0 && proposals[j - 1].pixel > p.pixel; --j) proposals[j] = proposals[j - 1];
+    proposals[j] = p;
+  }
   std::size_t out = 0;
   for (std::size_t i = 0; i < proposals.size(); ++i) {
     if (out > 0 && proposals[out - 1].pixel == proposals[i].pixel) proposals[out - 1].weight += proposals[i].weight;
@@ -100,8 +112,8 @@ inline float colourKernel(float x) {
 /// evaluated once (the kernel is symmetric). The proposals' colours are copied side by side first
 /// (the inner loop would otherwise chase exemplar indices), and a's own vote is summed in a
 /// register; the additions happen in the same order either way.
-std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
-  thread_local std::vector<float> votes, colours;
+std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth, std::vector<float>& votes,
+                        std::vector<float>& colours) {
   const std::size_t n = merged.size();
   votes.assign(n, 0.0f);
   colours.resize(3 * n);
@@ -178,7 +190,9 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
   for (int batch = 0; batch < kParityBatches; ++batch) {
     const PixelFactors factors = pixelFactors(exemplar, histograms, settings.histogramScale);
     forEachVoxelInBatch(volume.n, batch, [&](const std::array<int, 3>& v, std::size_t vi) {
-      thread_local std::vector<Proposal> proposals;
+      // One thread-local lookup per voxel (each costs a call in a shared library).
+      thread_local VoxelScratch scratch;
+      std::vector<Proposal>& proposals = scratch.proposals;
       proposals.clear();
       const std::int32_t current = volume.source[vi];
       forEachCoveringCentre(matches.grid, ex.shape, v, [&](std::size_t id, int i, int j) {
@@ -193,7 +207,7 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
       std::int32_t best = -1;
       switch (settings.choice) {
         case DiscreteSolveSettings::Choice::LargestVote: best = largestVote(proposals); break;
-        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth); break;
+        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colours); break;
         case DiscreteSolveSettings::Choice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
       }
       if (best < 0) return;
