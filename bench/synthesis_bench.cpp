@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
     else if (a == "--index-reference") base.indexReferenceCount = std::stod(next());
     else if (a == "--radius") base.coherenceRadius = std::stoi(next());
     else if (a == "--step") base.sparseStep = std::stoi(next());
+    else if (a == "--k") base.k = std::stoi(next());
+    else if (a == "--exhaustive-below") base.exhaustiveBelow = std::stoi(next());
+    else if (a == "--exhaustive-budget") base.exhaustiveBudget = std::stod(next());
     else if (a == "--verbose") base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
     else exemplars.push_back(a);
   }

@@ -22,6 +22,12 @@ struct Proposal {
   float weight;
 };
 
+/// Per-thread working memory of one voxel's choice.
+struct VoxelScratch {
+  std::vector<Proposal> proposals;
+  std::vector<float> votes, colours;
+};
+
 /// Eq. 3's factor 1 / (1 + sum_j max(0, Hs_j - He_j)) for a pixel's colour.
 double colourFactor(const float* rgb, const DiscreteHistograms& h) {
   if (!h.volumeColours) return 1.0;
@@ -56,9 +62,15 @@ PixelFactors pixelFactors(const RgbImage& exemplar, const DiscreteHistograms& h,
 }
 
 /// Sorts by pixel and sums the weights of repeated pixels (coherent neighbourhoods propose the
-/// same pixel many times), so the choices below work on distinct pixels.
+/// same pixel many times), so the choices below work on distinct pixels. Insertion sort: a voxel
+/// has a dozen or so proposals, too few for std::sort's machinery to pay off.
 void mergeRepeatedPixels(std::vector<Proposal>& proposals) {
-  std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.pixel < b.pixel; });
+  for (std::size_t i = 1; i < proposals.size(); ++i) {
+    const Proposal p = proposals[i];
+    std::size_t j = i;
+    for (; j > 0 && proposals[j - 1].pixel > p.pixel; --j) proposals[j] = proposals[j - 1];
+    proposals[j] = p;
+  }
   std::size_t out = 0;
   for (std::size_t i = 0; i < proposals.size(); ++i) {
     if (out > 0 && proposals[out - 1].pixel == proposals[i].pixel) proposals[out - 1].weight += proposals[i].weight;
@@ -86,9 +98,10 @@ std::int32_t largestVote(const std::vector<Proposal>& merged) {
 
 /// The colour kernel of ColourMode: (1 - x/16)^16 for x < 16, else 0, a compact stand-in for
 /// exp(-x) (within 0.02 of it everywhere) that costs four squarings instead of a call to exp.
+/// Branch-free (the cut-off is a max): which pairs fall beyond it is unpredictable. x/16 is exact,
+/// so 1 - x/16 <= 0 exactly when x >= 16.
 inline float colourKernel(float x) {
-  if (x >= 16.0f) return 0.0f;
-  float k = 1.0f - x * (1.0f / 16.0f);
+  float k = std::max(0.0f, 1.0f - x * (1.0f / 16.0f));
   k *= k;
   k *= k;
   k *= k;
@@ -96,21 +109,28 @@ inline float colourKernel(float x) {
 }
 
 /// The pixel whose colour gathers the largest weight under the colour kernel; each pair is
-/// evaluated once (the kernel is symmetric).
-std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth) {
-  thread_local std::vector<float> votes;
-  votes.assign(merged.size(), 0.0f);
-  for (std::size_t a = 0; a < merged.size(); ++a) {
-    const float* ea = exemplar.data.data() + 3 * std::size_t(merged[a].pixel);
-    votes[a] += merged[a].weight * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
-    for (std::size_t b = a + 1; b < merged.size(); ++b) {
-      const float k = colourKernel(squaredColourDistance(ea, exemplar.data.data() + 3 * std::size_t(merged[b].pixel)) * invBandwidth);
-      votes[a] += merged[b].weight * k;
-      votes[b] += merged[a].weight * k;
+/// evaluated once (the kernel is symmetric). The proposals' colours are copied side by side first
+/// (the inner loop would otherwise chase exemplar indices), and a's own vote is summed in a
+/// register; the additions happen in the same order either way.
+std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth, std::vector<float>& votes,
+                        std::vector<float>& colours) {
+  const std::size_t n = merged.size();
+  votes.assign(n, 0.0f);
+  colours.resize(3 * n);
+  for (std::size_t a = 0; a < n; ++a) std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3, colours.begin() + std::ptrdiff_t(3 * a));
+  for (std::size_t a = 0; a < n; ++a) {
+    const float* ea = colours.data() + 3 * a;
+    const float wa = merged[a].weight;
+    float vote = votes[a] + wa * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const float k = colourKernel(squaredColourDistance(ea, colours.data() + 3 * b) * invBandwidth);
+      vote += merged[b].weight * k;
+      votes[b] += wa * k;
     }
+    votes[a] = vote;
   }
   std::size_t best = 0;
-  for (std::size_t a = 1; a < merged.size(); ++a)
+  for (std::size_t a = 1; a < n; ++a)
     if (votes[a] > votes[best]) best = a;
   return merged[best].pixel;
 }
@@ -170,7 +190,9 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
   for (int batch = 0; batch < kParityBatches; ++batch) {
     const PixelFactors factors = pixelFactors(exemplar, histograms, settings.histogramScale);
     forEachVoxelInBatch(volume.n, batch, [&](const std::array<int, 3>& v, std::size_t vi) {
-      thread_local std::vector<Proposal> proposals;
+      // One thread-local lookup per voxel (each costs a call in a shared library).
+      thread_local VoxelScratch scratch;
+      std::vector<Proposal>& proposals = scratch.proposals;
       proposals.clear();
       const std::int32_t current = volume.source[vi];
       forEachCoveringCentre(matches.grid, ex.shape, v, [&](std::size_t id, int i, int j) {
@@ -185,7 +207,7 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
       std::int32_t best = -1;
       switch (settings.choice) {
         case DiscreteSolveSettings::Choice::LargestVote: best = largestVote(proposals); break;
-        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth); break;
+        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colours); break;
         case DiscreteSolveSettings::Choice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
       }
       if (best < 0) return;

@@ -138,7 +138,9 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     const int N = o.size >> (o.levels - 1 - l);
     const NeighborhoodShape shape{neighborhoods[l]};
     const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
-    const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow;
+    const SliceCentreGrid centres{N, o.sparseStep};
+    const bool exhaustive =
+        chenWang && en.count() < o.exhaustiveBelow && double(centres.count()) * en.count() <= o.exhaustiveBudget;
     SimilaritySets sets;
     std::unique_ptr<KdTree> tree;
     if (chenWang && !exhaustive) sets = buildSimilaritySets(en, o.k, o.minSeparation);
@@ -149,7 +151,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     else if (chenWang) volume = upsampleSources(volume, pyramid.levels[l - 1].width, ex);
     else volume = upsampleColors(volume);
 
-    SliceMatches matches(SliceCentreGrid{N, o.sparseStep});
+    SliceMatches matches(centres);
     const std::vector<double> theta = expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
     const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()), controlAtCentres(en, pyramid.control[l]));
     std::vector<std::int64_t> positionHistogram;

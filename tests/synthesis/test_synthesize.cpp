@@ -101,6 +101,23 @@ TEST(Synthesize, ReportHasEnergiesTimesAndQuality) {
   EXPECT_GT(r.report["peakMemoryMiB"].get<double>(), 0.0);
 }
 
+TEST(Synthesize, ExhaustiveSearchOnlyWithinTheBudget) {
+  // 48x48 exemplar, 16^3 in two levels: level 1 has 289 neighbourhoods x 384 centres (111k
+  // distances per iteration), level 2 has 2025 x 3072 (6.2M); both have fewer than 2048.
+  const cv::Mat ex = test::smoothImage(48, 48);
+  SynthesisOptions o = smallOptions(Method::ChenWang);
+  o.size = 16;
+  o.iterations = 1;
+  o.measure = false;
+  const SynthesisResult all = synthesizeSolid(ex, o);
+  EXPECT_EQ(all.report["levelReports"][0]["search"], "exhaustive");
+  EXPECT_EQ(all.report["levelReports"][1]["search"], "exhaustive");
+  o.exhaustiveBudget = 1e6;
+  const SynthesisResult budget = synthesizeSolid(ex, o);
+  EXPECT_EQ(budget.report["levelReports"][0]["search"], "exhaustive");
+  EXPECT_EQ(budget.report["levelReports"][1]["search"], "k-coherence");
+}
+
 TEST(Synthesize, KopfBlendsWithinTheColourRangeWithoutSources) {
   const cv::Mat ex = test::smoothImage(48, 48);
   SynthesisOptions o = smallOptions(Method::Kopf);
