@@ -24,16 +24,16 @@ Action addTruthCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--large-share", t.classes[1].share, "Share of large particles by number (0-1)")
       ->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  command->add_option("--spread", t.classes[0].radiusSpread, "Standard deviation of log radius (both classes)")
-      ->capture_default_str();
+  auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
+  command->add_option("--spread", *spread, "Standard deviation of log radius (both classes)")->capture_default_str();
   command->add_option("--elongation", t.elongation, "Largest axis stretch of an ellipsoid (1 = spheres)")
       ->capture_default_str();
   command->add_option("--noise", t.noise, "Pixel noise of the photo (sRGB standard deviation)")->capture_default_str();
   command->add_option("--seed", t.seed, "Random seed: same seed, same truth")->capture_default_str();
-  return [job, dims] {
+  return [job, dims, spread] {
     EllipsoidTruthOptions& t = job->truth;
     t.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
-    t.classes[1].radiusSpread = t.classes[0].radiusSpread;
+    t.classes[0].radiusSpread = t.classes[1].radiusSpread = *spread;
     t.classes[0].share = 1 - t.classes[1].share;
     std::erase_if(t.classes, [](const EllipsoidClass& c) { return c.share <= 0; });
     const auto report = runTruth(*job);

@@ -21,10 +21,10 @@ double sectionAreaFraction(const SolidVolume& volume) {
 } // namespace
 
 nlohmann::json runTruth(const TruthJob& job) {
+  EllipsoidTruth truth = makeEllipsoidTruth(job.truth);  // refuses bad options before anything is written
   std::error_code error;
   std::filesystem::create_directories(job.folder, error);
   if (error) throw InputError("cannot create folder " + job.folder + ": " + error.message());
-  EllipsoidTruth truth = makeEllipsoidTruth(job.truth);
 
   std::vector<int> perClass(job.truth.classes.size(), 0);
   for (int c : truth.classOf) ++perClass[std::size_t(c)];

@@ -22,7 +22,7 @@ struct EllipsoidTruthOptions {
   double volumeFraction = 0.2;
   std::vector<EllipsoidClass> classes{
       {7, 0.2, 0.75, {0.92f, 0.55f, 0.16f}},   // small and orange
-      {13, 0.15, 0.25, {0.25f, 0.48f, 0.88f}}, // large and blue: colour tells size
+      {13, 0.2, 0.25, {0.25f, 0.48f, 0.88f}},  // large and blue: colour tells size
   };
   double elongation = 1.25;   ///< stretch of the semi-axes: their logs uniform in [-ln e, ln e], centred so the product is 1
   cv::Vec3f backgroundSrgb{0.16f, 0.16f, 0.17f};
