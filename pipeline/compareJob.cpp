@@ -1,6 +1,8 @@
 #include "pipeline/compareJob.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <numeric>
 
 #include "common/Error.h"
@@ -40,7 +42,9 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   const SolidVolume truth = readVdb(truthPath);
   if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
   const auto it = truth.metadata.find("voxels_per_pixel");
-  const double truthScale = it == truth.metadata.end() ? 1.0 : std::stod(it->second);
+  const double truthScale = it == truth.metadata.end() ? 1.0 : std::strtod(it->second.c_str(), nullptr);
+  if (!(truthScale > 0) || !std::isfinite(truthScale))
+    throw InputError(truthPath + " has a voxels_per_pixel that is not a positive number");
   std::vector<double> truthVolumes = particleVolumes(truth);
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
   for (double& v : volumes) v /= scale * scale * scale;

@@ -132,7 +132,9 @@ public:
         if (fractionReached()) return finish("area fraction reached");
         if (limitReached()) return finish("particle limit reached");
       }
-      // Every quota met to the nearest particle, and still volume to fill: rounding up places more.
+      // Every quota met to the nearest particle, and still volume to fill: rounding up places more
+      // (some open bin is then below its rounded-up share, and nothing is held back), so every pass
+      // places a particle or closes a bin, and the loop ends.
       roundUp_ = result_.particles.size() == placedBefore;
       passShare_ = 1;
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
@@ -151,6 +153,7 @@ private:
   bool topUpWithThePhotosShares() {
     if (options_.particleWeights.empty() || toppedUp_) return false;
     toppedUp_ = true;
+    roundUp_ = false;
     ratio_ = photoRatio_;
     pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
     for (auto& failures : failures_) failures.clear();
@@ -268,10 +271,7 @@ private:
     const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng_);
     const int w = int(scaled(size.width)), h = int(scaled(size.height)), d = int(scaled(size.depth));
     const VoxelShape shape = factory_.make(w, h, d, rng_);
-    const std::size_t voxels = shape.voxelCount();
-    if (voxels == 0) return false;
-    ++made_[std::size_t(bin)];
-    madeVoxels_[std::size_t(bin)] += double(voxels);
+    if (shape.voxelCount() == 0) return false;
     return place(detail::prepareShape(shape), size, bin);
   }
 
@@ -310,6 +310,9 @@ private:
     result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), scale_});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += shape.voxels.size();
+    // Placed shapes only: in a crowded volume the large shapes of a bin fail more often.
+    ++made_[std::size_t(bin)];
+    madeVoxels_[std::size_t(bin)] += double(shape.voxels.size());
     if (options_.progress && id % kProgressEvery == 0) options_.progress(fraction(), id);
   }
 

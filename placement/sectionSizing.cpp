@@ -112,13 +112,15 @@ double predictedKs(const std::vector<SectionSample>& samples, const std::vector<
   double total = 0, photoTotal = 0;
   for (const auto& p : predicted) total += p.second;
   for (const auto& p : photo) photoTotal += p.second;
+  // Both CDFs just below each photo area, then at it (ties of equal areas counted together).
   double ks = 0, cumulative = 0, photoCumulative = 0;
   std::size_t next = 0;
   for (const auto& [area, weight] : photo) {
+    while (next < predicted.size() && predicted[next].first < area) cumulative += predicted[next++].second;
+    ks = std::max(ks, std::abs(cumulative / total - photoCumulative / photoTotal));
     while (next < predicted.size() && predicted[next].first <= area) cumulative += predicted[next++].second;
-    const double before = photoCumulative / photoTotal;
     photoCumulative += weight;
-    ks = std::max({ks, std::abs(cumulative / total - photoCumulative / photoTotal), std::abs(cumulative / total - before)});
+    ks = std::max(ks, std::abs(cumulative / total - photoCumulative / photoTotal));
   }
   return ks;
 }
@@ -269,10 +271,13 @@ Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses
     const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, minArea, factor), observed);
     fits.push_back({factor, predictedKs(samples, perClass, minArea, factor, x, photo.areas), x});
   }
-  double bestKs = INFINITY;
-  for (const Fit& f : fits) bestKs = std::min(bestKs, f.ks);
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < fits.size(); ++i)
+    if (fits[i].ks < fits[best].ks) best = i;
   const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.areas.size())));
-  Fit chosen = *std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.ks <= bestKs + tolerance; });
+  std::size_t chosenIndex = 0;
+  while (chosenIndex < best && !(fits[chosenIndex].ks <= fits[best].ks + tolerance)) ++chosenIndex;
+  Fit chosen = fits[chosenIndex];
   if (!(chosen.shares.sum() > 0)) chosen = {1, 1, observed};  // no shape was cut above the photo's specks
   return chosen;
 }

@@ -31,7 +31,8 @@ struct AreaClasses {
   int classOfArea(double area) const;
 };
 
-/// Classes from the smallest to the largest area of the particles the histogram counts.
+/// Classes from half the smallest area of the particles the histogram counts (not below the photo's
+/// smallest kept area) to the largest.
 AreaClasses areaClassesOf(const ExemplarStats& stats, int classes = 16);
 
 /// One random plane through one particle made for a class, at size factor 1, in photo pixels.
@@ -68,10 +69,10 @@ struct SectionSizing {
   double predictedKs = 0;              ///< KS of the predicted section areas against the photo's
 };
 
-/// Unfolds the photo's section areas at size factors 1 to 2 and keeps the one whose predicted
-/// sections are closest (KS) to the photo's: a plane rarely cuts a particle through its largest
-/// section, so the particles must be larger than their sections, by more when the photo's sizes are
-/// narrowly spread.
+/// Unfolds the photo's section areas at size factors 1 to 2 and keeps the smallest factor whose
+/// predicted sections are about as close (KS, within the photo's counting noise) to the photo's as
+/// the best one's: a plane rarely cuts a particle through its largest section, so the particles must
+/// be larger than their sections, by more when the photo's sizes are narrowly spread.
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
                                std::uint64_t seed);
 

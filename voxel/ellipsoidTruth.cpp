@@ -4,8 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include <Eigen/Geometry>
-
 #include "common/Error.h"
 #include "common/Random.h"
 #include "particles/rotation.h"
@@ -122,6 +120,7 @@ void validate(const EllipsoidTruthOptions& options) {
   const Dims& d = options.dims;
   if (d.x < 16 || d.y < 16 || d.z < 16 || d.count() > (std::size_t(1) << 30))
     throw InputError("truth dimensions must be at least 16 and at most 2^30 voxels in all");
+  if (!(options.noise >= 0 && options.noise <= 1)) throw InputError("truth photo noise must be in [0, 1]");
   if (!(options.volumeFraction > 0 && options.volumeFraction < 0.5))
     throw InputError("truth volume fraction must be in (0, 0.5)");
   if (options.classes.empty()) throw InputError("truth needs at least one class of ellipsoids");

@@ -63,6 +63,7 @@ INSTANTIATE_TEST_SUITE_P(Ellipsoids, ReconstructionOfATruth,
 
 TEST(TruthJob, RefusesAFolderItCannotCreate) {
   TruthJob job;
+  job.truth.dims = {64, 64, 64};
   job.folder = "/proc/solidtex-truth";
   EXPECT_THROW(runTruth(job), InputError);
 }
