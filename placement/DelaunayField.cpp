@@ -113,11 +113,10 @@ public:
     points_.clear();
     for (const Voxel& v : boundaryVoxels(voxels))
       if (facesFreeSpace(v)) points_.push_back(pointOf(v));
-    std::vector<Point>& points = points_;
-    CGAL::spatial_sort(points.begin(), points.end(), Kernel());
-    Cell hint = points.empty() ? Cell() : hintCell(points.front());
+    CGAL::spatial_sort(points_.begin(), points_.end(), Kernel());
+    Cell hint = points_.empty() ? Cell() : hintCell(points_.front());
     pending_.clear();
-    for (const Point& p : points) {
+    for (const Point& p : points_) {
       const Vertex v = insertPoint(p, hint);
       rememberHint(v);
       hint = v->cell();

@@ -41,13 +41,11 @@ using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
 BinPairs pairsPerBin(const ExemplarStats& stats, const std::vector<double>& particleWeights) {
-  const bool anyInner =
-      std::any_of(stats.particles.begin(), stats.particles.end(), [](const Particle2D& p) { return !p.border; });
   std::array<std::map<std::pair<int, int>, double>, kBins> weights;
-  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+  for (std::size_t i : statisticalParticles(stats.particles)) {
     const Particle2D& p = stats.particles[i];
     const double weight = particleWeights.empty() ? 1.0 : particleWeights[i];
-    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0 && weight > 0)
+    if (p.box.width > 0 && p.box.height > 0 && weight > 0)
       weights[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height}] += weight;
   }
   BinPairs pairs;

@@ -23,18 +23,6 @@ constexpr double kSmoothing = 0.05;
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
 constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
 
-// The particles the photo's histogram counts: those not cut by its border, or all when every one is.
-std::vector<std::size_t> statisticalParticles(const ExemplarStats& stats) {
-  const bool anyInner =
-      std::any_of(stats.particles.begin(), stats.particles.end(), [](const Particle2D& p) { return !p.border; });
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
-    const Particle2D& p = stats.particles[i];
-    if ((!p.border || !anyInner) && p.box.width > 0 && p.box.height > 0) out.push_back(i);
-  }
-  return out;
-}
-
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;
   for (int k = 0; k < shape.dims.z; ++k)
@@ -150,7 +138,8 @@ int AreaClasses::classOfArea(double area) const {
 }
 
 AreaClasses areaClassesOf(const ExemplarStats& stats, int classes) {
-  const std::vector<std::size_t> counted = statisticalParticles(stats);
+  std::vector<std::size_t> counted = statisticalParticles(stats.particles);
+  std::erase_if(counted, [&](std::size_t i) { return stats.particles[i].box.width <= 0 || stats.particles[i].box.height <= 0; });
   if (counted.empty()) throw InputError("section sizing: the photo has no particle to take sizes from");
   double lo = INFINITY, hi = 0;
   for (std::size_t i : counted) {

@@ -34,6 +34,10 @@ struct SizePair {
   int width = 0, height = 0, count = 0;
 };
 
+/// Indices of the particles the photo's statistics count: those not cut by its border, or all of
+/// them when every particle is (a photo of a few large grains), rather than no statistics at all.
+std::vector<std::size_t> statisticalParticles(const std::vector<Particle2D>& particles);
+
 /// Everything later stages need to know about the photo.
 struct ExemplarStats {
   std::string name;                 ///< the photo's file name

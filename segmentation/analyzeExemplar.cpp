@@ -59,7 +59,8 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
     throw InputError(name + ": no particles found (nothing of at least " + std::to_string(int(std::ceil(minArea))) +
                      " pixels stands out from the background; give a mask, white = particle, or a smaller minimum area)");
   detail::measureBackground(stats, linear);
-  const auto counted = detail::statisticalParticles(stats.particles);
+  std::vector<const Particle2D*> counted;
+  for (std::size_t i : statisticalParticles(stats.particles)) counted.push_back(&stats.particles[i]);
   stats.histogram = detail::buildAreaHistogram(counted);
   stats.sizePairs = detail::buildSizePairs(counted);
   return stats;

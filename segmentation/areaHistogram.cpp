@@ -12,16 +12,16 @@ int AreaHistogram::binOf(double area) const {
   return std::clamp(int(upper - edges.begin()) - 1, 0, 9);
 }
 
-namespace detail {
-
-std::vector<const Particle2D*> statisticalParticles(const std::vector<Particle2D>& particles) {
-  std::vector<const Particle2D*> inner, all;
-  for (const Particle2D& p : particles) {
-    all.push_back(&p);
-    if (!p.border) inner.push_back(&p);
+std::vector<std::size_t> statisticalParticles(const std::vector<Particle2D>& particles) {
+  std::vector<std::size_t> inner, all;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    all.push_back(i);
+    if (!particles[i].border) inner.push_back(i);
   }
   return inner.empty() ? all : inner;
 }
+
+namespace detail {
 
 AreaHistogram buildAreaHistogram(const std::vector<const Particle2D*>& particles) {
   AreaHistogram h;

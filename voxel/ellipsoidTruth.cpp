@@ -65,17 +65,15 @@ Footprint footprintOf(const Ellipsoid& e, Rng& rng) {
   Eigen::Vector3i half;
   for (int a = 0; a < 3; ++a) half[a] = int(std::ceil((r.row(a).transpose().cwiseProduct(e.semiAxes)).norm())) + 1;
   const Dims box{2 * half.x() + 1, 2 * half.y() + 1, 2 * half.z() + 1};
-  std::vector<std::uint8_t> in(box.count(), 0), grown(box.count(), 0);
+  std::vector<std::uint8_t> grown(box.count(), 0);
   Footprint f;
   for (int k = 0; k < box.z; ++k)
     for (int j = 0; j < box.y; ++j)
       for (int i = 0; i < box.x; ++i) {
         const Eigen::Vector3d d(i - half.x(), j - half.y(), k - half.z());
-        if (d.dot(q * d) > 1) continue;
-        in[box.index(i, j, k)] = 1;
-        f.inside.push_back({i - half.x(), j - half.y(), k - half.z()});
+        if (d.dot(q * d) <= 1) f.inside.push_back({i - half.x(), j - half.y(), k - half.z()});
       }
-  if (f.inside.empty()) f.inside.push_back({0, 0, 0}), in[box.index(half.x(), half.y(), half.z())] = 1;
+  if (f.inside.empty()) f.inside.push_back({0, 0, 0});  // a tiny ellipsoid between voxel centres
   for (const Voxel& v : f.inside)
     for (int dk = -1; dk <= 1; ++dk)
       for (int dj = -1; dj <= 1; ++dj)
