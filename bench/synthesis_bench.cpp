@@ -83,8 +83,8 @@ int main(int argc, char** argv) {
     else if (a == "--verbose") base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
     else exemplars.push_back(a);
   }
-  std::printf("%-12s %-9s %5s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size", "E_axis", "E_oblique", "coverage", "flatness",
-              "colorTV", "time_s", "peakMiB");
+  std::printf("%-12s %-9s %5s %8s %8s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size", "E_axis", "E_obl",
+              "E2_axis", "E2_obl", "coverage", "flatness", "colorTV", "time_s", "peakMiB");
   for (const auto& path : exemplars) {
     cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
     if (bgr.empty()) {
@@ -105,8 +105,8 @@ int main(int argc, char** argv) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const auto& q = r.report.contains("quality") ? r.report["quality"] : nlohmann::json::object();
       auto get = [&](const char* k) { return q.contains(k) ? q[k].get<double>() : -1.0; };
-      std::printf("%-12s %-9s %5d %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(), m.c_str(), o.size, get("energyAxis"),
-                  get("energyOblique"), get("positionCoverage"), get("positionFlatness"), get("colorHistogramDistance"),
+      std::printf("%-12s %-9s %5d %8.4f %8.4f %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(), m.c_str(), o.size,
+                  get("energyAxis"), get("energyOblique"), get("energyAxisSquared"), get("energyObliqueSquared"), get("positionCoverage"), get("positionFlatness"), get("colorHistogramDistance"),
                   r.report["synthesisSeconds"].get<double>(), r.report["peakMemoryMiB"].get<double>());
       std::fflush(stdout);
       (void)seconds;

@@ -16,6 +16,8 @@ namespace solidtex::synthesis {
 
 namespace {
 
+constexpr double kEnergyExponent = 0.8;  // Kopf et al.'s and Chen and Wang's gamma
+
 /// Periodic trilinear sample of the volume at continuous voxel coordinates.
 void sampleTrilinear(const WorkVolume& v, const Eigen::Vector3d& p, float* out) {
   int i0[3];
@@ -41,26 +43,34 @@ double gaussian(Rng& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
 }
 
-/// Mean over the columns of `queries` of the squared distance to the nearest column of `exemplar`.
-double meanNearestDistance(const Eigen::MatrixXf& queries, const Eigen::MatrixXf& exemplar) {
+/// Per column of `queries`, the squared distance to the nearest column of `exemplar`, per component.
+std::vector<double> nearestSquaredDistances(const Eigen::MatrixXf& queries, const Eigen::MatrixXf& exemplar) {
   const Eigen::VectorXf exemplarNorms = exemplar.colwise().squaredNorm().transpose();
   const Eigen::Index Q = queries.cols();
   constexpr Eigen::Index chunk = 128;
   const Eigen::Index chunks = (Q + chunk - 1) / chunk;
-  std::vector<double> best(Q, 0.0);
+  std::vector<double> best(std::size_t(Q), 0.0);
   tbb::parallel_for(Eigen::Index(0), chunks, [&](Eigen::Index c) {
     const Eigen::Index b = c * chunk, e = std::min(Q, b + chunk);
     const Eigen::MatrixXf q = queries.middleCols(b, e - b);
     const Eigen::MatrixXf dots = exemplar.transpose() * q;  // M x chunk
     for (Eigen::Index j = 0; j < e - b; ++j) {
-      const float qn = q.col(j).squaredNorm();
-      const float m = (exemplarNorms - 2.0f * dots.col(j)).minCoeff() + qn;
-      best[b + j] = std::max(0.0f, m);
+      Eigen::Index nearest = 0;
+      (exemplarNorms - 2.0f * dots.col(j)).minCoeff(&nearest);
+      // Found by the expansion, measured directly: the expansion's cancellation error, raised to
+      // the power gamma / 2, would swamp exact copies.
+      const double d = (exemplar.col(nearest) - q.col(j)).cast<double>().squaredNorm();
+      best[std::size_t(b + j)] = d / double(queries.rows());
     }
   });
+  return best;
+}
+
+/// Mean of d^(gamma / 2) over the squared distances d.
+double meanPower(const std::vector<double>& squared, double gamma) {
   double sum = 0;
-  for (double d : best) sum += d;
-  return Q ? sum / double(Q) / double(queries.rows()) : 0.0;
+  for (double d : squared) sum += std::pow(d, gamma / 2);
+  return squared.empty() ? 0.0 : sum / double(squared.size());
 }
 
 } // namespace
@@ -89,10 +99,8 @@ SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const Mea
       for (int i = shape.lo(); i <= shape.hi(); ++i, out += 3) sampleTrilinear(v, origin + double(i) * R.col(0) + double(j) * R.col(1), out);
   }
 
-  SliceEnergy e;
-  e.axis = meanNearestDistance(axisQ, ex);
-  e.oblique = meanNearestDistance(obliqueQ, ex);
-  return e;
+  const std::vector<double> axis = nearestSquaredDistances(axisQ, ex), oblique = nearestSquaredDistances(obliqueQ, ex);
+  return {meanPower(axis, kEnergyExponent), meanPower(oblique, kEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
 }
 
 double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImage& exemplar, int bins) {
