@@ -1,8 +1,15 @@
-// Delaunay spaciousness (paper 3.7): a 3D Delaunay triangulation of the particles' boundary voxels
-// and of samples of the walls. Every finite cell's circumsphere is empty, so its circumcentre,
-// rounded to a voxel, is a candidate spot; the candidates are bucketed by value and a cell's
-// candidate is dropped as soon as an insertion destroys the cell (find_conflicts + insert_in_hole
-// tell exactly which cells die). The only CGAL translation unit of placement/.
+// Delaunay spaciousness (paper 3.7): a 3D Delaunay triangulation of a sample of the particles'
+// boundary voxels and of samples of the walls. Every finite cell's circumsphere is empty, so its
+// circumcentre, rounded to a voxel, is a candidate spot; the candidates are bucketed by value and a
+// cell's candidate is dropped as soon as an insertion destroys the cell (find_conflicts +
+// insert_in_hole tell exactly which cells die). The only CGAL translation unit of placement/.
+//
+// The sample: every boundary voxel is a triangulation vertex or 6-adjacent to one, so a ball empty
+// of the vertices is empty of the particles once shrunk by one voxel (the field's slack). Voxels
+// with x + y + z divisible by 3 are such a sample wherever the surface is locally flat (each of the
+// other two residues has a neighbour of residue 0 along every axis); a voxel whose neighbours of
+// residue 0 are all inside or free joins the sample. That is about 40 % of the boundary voxels, and
+// the triangulation's time and memory follow its vertex count.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,11 +54,32 @@ constexpr int kWallSpacing = 2;
 // Candidate values are kept in 1/16-voxel steps (rounded down, so they stay lower bounds): equal
 // steps are ties, drawn in random order, and the buckets stay few.
 constexpr double kSteps = 16;
+// Vertices sit this far (at most, per axis) from their voxel centres, by a fixed pseudo-random
+// offset: the voxel lattice is full of cospherical points, whose in-sphere tests CGAL must settle
+// exactly; jittered, almost none are degenerate. Values are lowered by the offsets' length.
+constexpr double kJitter = 0.005;
+const double kJitterLength = kJitter * std::sqrt(3.0);
+constexpr int kSampleModulus = 3;
 // Hint cells for point location and nearest-vertex queries come from the latest vertex in the same
 // block of this many voxels, so walks stay short.
 constexpr int kHintBlock = 8;
 
 Point pointOf(const Voxel& v) { return {double(v.x), double(v.y), double(v.z)}; }
+
+// A fixed offset in [-kJitter, kJitter] per axis (splitmix64 of the voxel).
+Point jitteredPointOf(const Voxel& v) {
+  std::uint64_t h = (std::uint64_t(std::uint32_t(v.x)) << 42) ^ (std::uint64_t(std::uint32_t(v.y)) << 21) ^ std::uint32_t(v.z);
+  const auto offset = [&h] {
+    h += 0x9e3779b97f4a7c15ULL;
+    std::uint64_t z = h;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return kJitter * (double(z >> 11) * 0x1.0p-53 * 2 - 1);
+  };
+  const double dx = offset(), dy = offset(), dz = offset();
+  return {v.x + dx, v.y + dy, v.z + dz};
+}
 
 // -1, -1+h, ..., n: the wall sample coordinates along one axis, ends included.
 std::vector<int> wallSamples(int n) {
@@ -89,7 +117,8 @@ class DelaunayField final : public SpaciousnessField {
 public:
   DelaunayField(Dims dims, float maxRadius)
       : dims_(dims), maxRadius_(maxRadius), capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
-        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64), spotSeen_(occupied_.size()),
+        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64), sampled_(occupied_.size()),
+        spotSeen_(occupied_.size()),
         hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
                     (dims.z + kHintBlock - 1) / kHintBlock},
         hints_(hintBlocks_.count()) {
@@ -103,6 +132,7 @@ public:
   PlacerKind kind() const override { return PlacerKind::Delaunay; }
   Dims dims() const override { return dims_; }
   float maxRadius() const override { return maxRadius_; }
+  float slack() const override { return 1; }
 
   void insert(const std::vector<Voxel>& voxels) override {
     checkInside(dims_, voxels);
@@ -110,9 +140,7 @@ public:
       const std::size_t i = dims_.index(v);
       occupied_[i / 64] |= std::uint64_t(1) << (i % 64);
     }
-    points_.clear();
-    for (const Voxel& v : boundaryVoxels(voxels))
-      if (facesFreeSpace(v)) points_.push_back(pointOf(v));
+    samplePoints(voxels);
     CGAL::spatial_sort(points_.begin(), points_.end(), Kernel());
     Cell hint = points_.empty() ? Cell() : hintCell(points_.front());
     pending_.clear();
@@ -124,13 +152,15 @@ public:
     addPendingCandidates();
   }
 
+  // The nearest vertex less its jitter is the distance to the sample, less the slack a sure bound.
   float at(const Voxel& v) const override {
     checkInside(dims_, v);
     if (isOccupied(dims_.index(v))) return 0;
     const Point p = pointOf(v);
     const Vertex nearest = triangulation_.nearest_vertex(p, hintCell(p));
-    const double d = std::sqrt(CGAL::squared_distance(p, nearest->point()));
-    return float(std::min({d, double(wallDistance(dims_, v.x, v.y, v.z)), double(maxRadius_)}));
+    const double sample = std::sqrt(CGAL::squared_distance(p, nearest->point())) - kJitterLength;
+    const double bound = std::max(1.0, sample - double(slack()));  // a free voxel is a whole voxel from any other
+    return float(std::min({bound, double(wallDistance(dims_, v.x, v.y, v.z)), double(maxRadius_)}));
   }
 
   std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
@@ -169,7 +199,27 @@ private:
     VoxelIndex spot;
   };
 
-  bool isOccupied(std::size_t i) const { return (occupied_[i / 64] >> (i % 64)) & 1; }
+  static bool bit(const std::vector<std::uint64_t>& bits, std::size_t i) { return (bits[i / 64] >> (i % 64)) & 1; }
+  bool isOccupied(std::size_t i) const { return bit(occupied_, i); }
+
+  // The new particle's boundary voxels that face free space, sampled (see the top of the file)
+  // into points_, jittered.
+  void samplePoints(const std::vector<Voxel>& voxels) {
+    points_.clear();
+    unsampled_.clear();
+    const auto take = [&](const Voxel& v) {
+      points_.push_back(jitteredPointOf(v));
+      const std::size_t i = dims_.index(v);
+      sampled_[i / 64] |= std::uint64_t(1) << (i % 64);
+    };
+    for (const Voxel& v : boundaryVoxels(voxels))
+      if (facesFreeSpace(v)) ((v.x + v.y + v.z) % kSampleModulus == 0 ? take(v) : unsampled_.push_back(v));
+    const auto sampled = [&](int i, int j, int k) { return dims_.contains(i, j, k) && bit(sampled_, dims_.index(i, j, k)); };
+    for (const Voxel& v : unsampled_)
+      if (!(sampled(v.x - 1, v.y, v.z) || sampled(v.x + 1, v.y, v.z) || sampled(v.x, v.y - 1, v.z) ||
+            sampled(v.x, v.y + 1, v.z) || sampled(v.x, v.y, v.z - 1) || sampled(v.x, v.y, v.z + 1)))
+        take(v);
+  }
 
   // The nearest occupied voxel to any free voxel can be taken among those with a free 6-neighbour
   // (the argument of boundaryVoxels, applied to all particles together): a boundary voxel pressed
@@ -238,9 +288,10 @@ private:
     }
   }
 
-  // The ball around the rounded circumcentre that fits in the circumsphere holds no boundary voxel,
-  // hence (see boundaryVoxels) no occupied voxel, as long as the spot itself is empty. The paper
-  // subtracts 1 for the rounding; the offset itself (at most sqrt(3)/2) is the exact amount.
+  // The ball around the rounded circumcentre that fits in the circumsphere, less the jitter, holds
+  // no sampled voxel, and shrunk by the slack no boundary voxel, hence (see boundaryVoxels) no
+  // occupied voxel, as long as the spot itself is empty. The paper subtracts 1 for the rounding;
+  // the offset itself (at most sqrt(3)/2) is the exact amount.
   void addCandidate(Cell c) {
     const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
                                             c->vertex(3)->point());
@@ -252,7 +303,7 @@ private:
     if (isOccupied(index)) return;
     const double radius = std::sqrt(CGAL::squared_distance(centre, c->vertex(0)->point()));
     const double offset = std::sqrt(CGAL::squared_distance(centre, pointOf(spot)));
-    const double value = std::min({radius - offset, double(wallDistance(dims_, spot.x, spot.y, spot.z)),
+    const double value = std::min({radius - offset - kJitterLength, double(wallDistance(dims_, spot.x, spot.y, spot.z)),
                                    double(maxRadius_)});
     const double key = std::floor(value * kSteps);
     if (key < 1) return;
@@ -283,6 +334,7 @@ private:
   Delaunay triangulation_;
   std::vector<std::vector<Entry>> buckets_;  ///< bucket k: candidates of value k / kSteps
   std::vector<std::uint64_t> occupied_;      ///< one bit per voxel
+  std::vector<std::uint64_t> sampled_;       ///< one bit per voxel: a triangulation vertex
   std::vector<std::uint64_t> spotSeen_;      ///< one bit per voxel: spots bestFit has taken (all 0 between calls)
   Dims hintBlocks_;
   std::vector<Vertex> hints_;
@@ -290,6 +342,7 @@ private:
   std::vector<Delaunay::Facet> facets_;
   std::vector<Cell> conflicts_, pending_;
   std::vector<Point> points_;
+  std::vector<Voxel> unsampled_;
 };
 
 } // namespace

@@ -30,14 +30,19 @@ public:
   virtual float maxRadius() const = 0;
   /// Marks a newly placed particle's voxels (volume coordinates) occupied and updates the field.
   virtual void insert(const std::vector<Voxel>& voxels) = 0;
-  /// This field's spaciousness of v.
+  /// This field's spaciousness of v: never above the exact value (brute, edt: equal to it;
+  /// discrete: at least the exact value / sqrt(3); Delaunay: at least the exact value less 1.02).
   virtual float at(const Voxel& v) const = 0;
-  /// Up to maxCount distinct candidate spots whose spaciousness is at least `radius`, the smallest
-  /// spaciousness first (best fit), equal values in an order drawn from rng.
+  /// Up to maxCount distinct free candidate spots whose value is at least `radius`, the smallest
+  /// value first (best fit), equal values in an order drawn from rng. A spot's spaciousness is at
+  /// least its value less slack().
   virtual std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) = 0;
+  /// How far bestFit's values may exceed the spaciousness: 0 for the grid fields; 1 voxel for the
+  /// Delaunay field, whose triangulation holds a sample of the particles' surface voxels.
+  virtual float slack() const { return 0; }
   /// The spots bestFit picks from with the values it ranks them by, for a field that keeps
   /// candidates apart from its voxels (Delaunay: rounded circumcentres, valued by their circumradius
-  /// less the rounding). Empty for the grid fields, whose every free voxel is a candidate valued at().
+  /// less the rounding and the jitter of its vertices). Empty for the grid fields, whose every free voxel is a candidate valued at().
   virtual std::vector<std::pair<Voxel, float>> candidates() const { return {}; }
 };
 

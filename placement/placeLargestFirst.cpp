@@ -285,8 +285,8 @@ private:
       for (const Voxel& spot : spots) {
         if (std::find(tried_.begin(), tried_.end(), spot) != tried_.end()) continue;
         tried_.push_back(spot);
-        // bestFit's spots hold at least `radius`: a free bound, where at() may be a costly query.
-        if (detail::fitsAt(shape, spot, radius, result_.ids, options_.dims)) {
+        // bestFit's spots hold at least `radius` less the slack: a free bound, where at() may be a costly query.
+        if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), result_.ids, options_.dims)) {
           commit(shape, spot, size, bin);
           return true;
         }
