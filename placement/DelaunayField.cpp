@@ -22,6 +22,7 @@
 #include <CGAL/Triangulation_vertex_base_3.h>
 #include <CGAL/spatial_sort.h>
 
+#include "placement/detail/VoxelBits.h"
 #include "placement/detail/fieldFactories.h"
 #include "placement/detail/voxelSets.h"
 
@@ -117,8 +118,7 @@ class DelaunayField final : public SpaciousnessField {
 public:
   DelaunayField(Dims dims, float maxRadius)
       : dims_(dims), maxRadius_(maxRadius), capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
-        buckets_(std::size_t(capKey_) + 1), occupied_((dims.count() + 63) / 64), sampled_(occupied_.size()),
-        spotSeen_(occupied_.size()),
+        buckets_(std::size_t(capKey_) + 1), occupied_(dims.count()), sampled_(dims.count()), spotSeen_(dims.count()),
         hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
                     (dims.z + kHintBlock - 1) / kHintBlock},
         hints_(hintBlocks_.count()) {
@@ -136,10 +136,7 @@ public:
 
   void insert(const std::vector<Voxel>& voxels) override {
     checkInside(dims_, voxels);
-    for (const Voxel& v : voxels) {
-      const std::size_t i = dims_.index(v);
-      occupied_[i / 64] |= std::uint64_t(1) << (i % 64);
-    }
+    for (const Voxel& v : voxels) occupied_.set(dims_.index(v));
     samplePoints(voxels);
     CGAL::spatial_sort(points_.begin(), points_.end(), Kernel());
     Cell hint = points_.empty() ? Cell() : hintCell(points_.front());
@@ -177,11 +174,11 @@ public:
           continue;
         }
         swapEntries(bucket, taken++, j);
-        if (!testAndSet(spotSeen_, spot)) spots.push_back(dims_.voxel(spot));  // several cells may round to one spot
+        if (!spotSeen_.testAndSet(spot)) spots.push_back(dims_.voxel(spot));  // several cells may round to one spot
       }
       if (int(spots.size()) >= maxCount) break;
     }
-    for (const Voxel& v : spots) spotSeen_[dims_.index(v) / 64] = 0;  // the words touched, all clear again
+    for (const Voxel& v : spots) spotSeen_.clearWordOf(dims_.index(v));  // all clear again
     return spots;
   }
 
@@ -199,8 +196,7 @@ private:
     VoxelIndex spot;
   };
 
-  static bool bit(const std::vector<std::uint64_t>& bits, std::size_t i) { return (bits[i / 64] >> (i % 64)) & 1; }
-  bool isOccupied(std::size_t i) const { return bit(occupied_, i); }
+  bool isOccupied(std::size_t i) const { return occupied_.test(i); }
 
   // The new particle's boundary voxels that face free space, sampled (see the top of the file)
   // into points_, jittered.
@@ -209,12 +205,11 @@ private:
     unsampled_.clear();
     const auto take = [&](const Voxel& v) {
       points_.push_back(jitteredPointOf(v));
-      const std::size_t i = dims_.index(v);
-      sampled_[i / 64] |= std::uint64_t(1) << (i % 64);
+      sampled_.set(dims_.index(v));
     };
     for (const Voxel& v : boundaryVoxels(voxels))
       if (facesFreeSpace(v)) ((v.x + v.y + v.z) % kSampleModulus == 0 ? take(v) : unsampled_.push_back(v));
-    const auto sampled = [&](int i, int j, int k) { return dims_.contains(i, j, k) && bit(sampled_, dims_.index(i, j, k)); };
+    const auto sampled = [&](int i, int j, int k) { return dims_.contains(i, j, k) && sampled_.test(dims_.index(i, j, k)); };
     for (const Voxel& v : unsampled_)
       if (!(sampled(v.x - 1, v.y, v.z) || sampled(v.x + 1, v.y, v.z) || sampled(v.x, v.y - 1, v.z) ||
             sampled(v.x, v.y + 1, v.z) || sampled(v.x, v.y, v.z - 1) || sampled(v.x, v.y, v.z + 1)))
@@ -228,13 +223,6 @@ private:
     const auto free = [&](int i, int j, int k) { return dims_.contains(i, j, k) && !isOccupied(dims_.index(i, j, k)); };
     return free(v.x - 1, v.y, v.z) || free(v.x + 1, v.y, v.z) || free(v.x, v.y - 1, v.z) || free(v.x, v.y + 1, v.z) ||
            free(v.x, v.y, v.z - 1) || free(v.x, v.y, v.z + 1);
-  }
-
-  static bool testAndSet(std::vector<std::uint64_t>& bits, std::size_t i) {
-    const std::uint64_t mask = std::uint64_t(1) << (i % 64);
-    const bool was = bits[i / 64] & mask;
-    bits[i / 64] |= mask;
-    return was;
   }
 
   std::size_t hintIndex(const Point& p) const {
@@ -333,9 +321,9 @@ private:
   std::uint32_t capKey_;
   Delaunay triangulation_;
   std::vector<std::vector<Entry>> buckets_;  ///< bucket k: candidates of value k / kSteps
-  std::vector<std::uint64_t> occupied_;      ///< one bit per voxel
-  std::vector<std::uint64_t> sampled_;       ///< one bit per voxel: a triangulation vertex
-  std::vector<std::uint64_t> spotSeen_;      ///< one bit per voxel: spots bestFit has taken (all 0 between calls)
+  VoxelBits occupied_;
+  VoxelBits sampled_;   ///< triangulation vertices
+  VoxelBits spotSeen_;  ///< spots bestFit has taken (empty between calls)
   Dims hintBlocks_;
   std::vector<Vertex> hints_;
   Vertex latest_;

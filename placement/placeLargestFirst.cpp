@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "common/Error.h"
 #include "placement/detail/shapeFit.h"
@@ -29,6 +30,10 @@ constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
 constexpr double kFirstPassShare = 0.85;
 constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
+constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
+// Shapes are made this many at a time per pair, in parallel: the spare waits for the pair's next
+// turn. Fixed, so that the shapes do not depend on the thread count.
+constexpr int kShapesPerBatch = 2;
 
 // A (width, height) box of the photo's particles and how often 3D particles take it.
 struct WeightedPair {
@@ -37,6 +42,12 @@ struct WeightedPair {
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
+
+// A particle made for a pair, ready to be tried at spots.
+struct ReadyShape {
+  ParticleSize size;
+  detail::FitShape fit;  ///< no voxels when the shape came out empty
+};
 
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
@@ -97,7 +108,8 @@ public:
   Placer(const ExemplarStats& stats, const ParticleFactory& factory, SpaciousnessField& field,
          const PlacementOptions& options)
       : stats_(stats), factory_(factory), field_(field), options_(options),
-        pairs_(pairsPerBin(stats, options.particleWeights)), rng_(deriveSeed(options.seed, kPlacementStream)) {
+        pairs_(pairsPerBin(stats, options.particleWeights)), rng_(deriveSeed(options.seed, kPlacementStream)),
+        occupied_(options.dims.count()), tried_(options.dims.count()) {
     const BinPairs photoPairs = pairsPerBin(stats, {});
     double total = 0, photoTotal = 0;
     for (int b = 0; b < kBins; ++b) {
@@ -154,6 +166,7 @@ private:
     roundUp_ = false;
     ratio_ = photoRatio_;
     pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
+    shapes_.clear();                   // made at the larger sizes
     for (auto& failures : failures_) failures.clear();
     scale_ = options_.voxelsPerPixel;
     startSizeEstimates();
@@ -266,32 +279,58 @@ private:
   }
 
   bool tryPair(const WeightedPair& pair, int bin) {
-    const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng_);
-    const int w = int(scaled(size.width)), h = int(scaled(size.height)), d = int(scaled(size.depth));
-    const VoxelShape shape = factory_.make(w, h, d, rng_);
-    if (shape.voxelCount() == 0) return false;
-    return place(detail::prepareShape(shape), size, bin);
+    const ReadyShape shape = nextShape(pair, bin);
+    return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
+  }
+
+  // Shape n of a pair is drawn from its own stream (seed, bin, pair, n, top-up), whoever makes it.
+  ReadyShape nextShape(const WeightedPair& pair, int bin) {
+    ShapeQueue& queue = shapes_[{bin, pair.width, pair.height}];
+    if (queue.next == queue.ready.size()) {
+      queue.ready.assign(kShapesPerBatch, {});
+      queue.next = 0;
+      tbb::parallel_for(0, kShapesPerBatch, [&](int i) {
+        std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + (toppedUp_ ? 1 : 0));
+        for (const std::uint64_t part : {std::uint64_t(bin), std::uint64_t(pair.width), std::uint64_t(pair.height),
+                                         queue.made + std::uint64_t(i)})
+          stream = deriveSeed(stream, part);
+        Rng rng(stream);
+        ReadyShape& shape = queue.ready[std::size_t(i)];
+        shape.size = factory_.pickDepth(pair.width, pair.height, rng);
+        const VoxelShape voxels =
+            factory_.make(int(scaled(shape.size.width)), int(scaled(shape.size.height)), int(scaled(shape.size.depth)), rng);
+        if (voxels.voxelCount() > 0) shape.fit = detail::prepareShape(voxels);
+      });
+      queue.made += kShapesPerBatch;
+    }
+    return std::move(queue.ready[queue.next++]);
   }
 
   // Best fit (paper 3.7): the smallest spots that may hold the shape first, checked voxel by voxel.
   bool place(const detail::FitShape& shape, const ParticleSize& size, int bin) {
-    tried_.clear();
+    fieldUpdate_.wait();
     const float cap = field_.maxRadius();
+    triedSpots_.clear();
+    const auto forgetTried = [&] {
+      for (const Voxel& spot : triedSpots_) tried_.clearWordOf(options_.dims.index(spot));
+    };
     for (int step = 0; step < kRadiusSteps; ++step) {
       const float t = float(step) / float(kRadiusSteps - 1);
       const float radius = std::min(cap, shape.innerRadius + t * (shape.outerRadius - shape.innerRadius));
       const std::vector<Voxel> spots = field_.bestFit(radius, options_.candidatesPerTry, rng_);
-      if (spots.empty()) return false;  // nothing this spacious, so nothing more spacious either
+      if (spots.empty()) break;  // nothing this spacious, so nothing more spacious either
       for (const Voxel& spot : spots) {
-        if (std::find(tried_.begin(), tried_.end(), spot) != tried_.end()) continue;
-        tried_.push_back(spot);
+        if (tried_.testAndSet(options_.dims.index(spot))) continue;
+        triedSpots_.push_back(spot);
         // bestFit's spots hold at least `radius` less the slack: a free bound, where at() may be a costly query.
-        if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), result_.ids, options_.dims)) {
+        if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims)) {
+          forgetTried();
           commit(shape, spot, size, bin);
           return true;
         }
       }
     }
+    forgetTried();
     return false;
   }
 
@@ -302,9 +341,12 @@ private:
     for (const Voxel& v : shape.voxels) {
       const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};
       result_.ids[options_.dims.index(w)] = id;
+      occupied_.set(options_.dims.index(w));
       volumeVoxels_.push_back(w);
     }
-    field_.insert(volumeVoxels_);
+    // The field takes the particle while the next shape is made (place() waits for it): its
+    // update and the shape's voxelization are the two largest costs of a try.
+    fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
     result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), scale_});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += shape.voxels.size();
@@ -315,6 +357,7 @@ private:
   }
 
   PlacementResult finish(const std::string& reason) {
+    fieldUpdate_.wait();
     result_.stopReason = reason;
     result_.volumeFraction = fraction();
     const auto placed = double(result_.particles.size());
@@ -329,6 +372,12 @@ private:
   SpaciousnessField& field_;
   const PlacementOptions& options_;
   BinPairs pairs_;
+  struct ShapeQueue {
+    std::vector<ReadyShape> ready;
+    std::size_t next = 0;
+    std::uint64_t made = 0;
+  };
+  std::map<std::array<int, 3>, ShapeQueue> shapes_;  ///< per (bin, width, height): shapes made ahead
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;
   std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
@@ -340,7 +389,11 @@ private:
   double targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
   PlacementResult result_;
-  std::vector<Voxel> tried_, volumeVoxels_;
+  detail::VoxelBits occupied_;
+  detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
+  std::vector<Voxel> triedSpots_;
+  std::vector<Voxel> volumeVoxels_;  ///< the last particle's, read by fieldUpdate_
+  tbb::task_group fieldUpdate_;
 };
 
 } // namespace

@@ -66,8 +66,7 @@ FitShape prepareShape(const VoxelShape& shape) {
   return fit;
 }
 
-bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const std::vector<std::int32_t>& ids,
-            Dims dims) {
+bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied, Dims dims) {
   const Voxel o = originAt(shape, spot);
   if (o.x < 0 || o.y < 0 || o.z < 0 || o.x + shape.dims.x > dims.x || o.y + shape.dims.y > dims.y ||
       o.z + shape.dims.z > dims.z)
@@ -76,7 +75,7 @@ bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const 
   const double known = double(spaciousness) * double(spaciousness) - 0.5;
   for (std::size_t i = 0; i < shape.voxels.size() && shape.squared[i] >= known; ++i) {
     const Voxel& v = shape.voxels[i];
-    if (ids[dims.index(o.x + v.x, o.y + v.y, o.z + v.z)] != 0) return false;
+    if (occupied.test(dims.index(o.x + v.x, o.y + v.y, o.z + v.z))) return false;
   }
   return true;
 }

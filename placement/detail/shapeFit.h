@@ -5,6 +5,7 @@
 
 #include "common/Grid.h"
 #include "particles/VoxelShape.h"
+#include "placement/detail/VoxelBits.h"
 
 namespace solidtex::detail {
 
@@ -26,10 +27,9 @@ inline Voxel originAt(const FitShape& shape, const Voxel& spot) {
   return {spot.x - shape.anchor.x, spot.y - shape.anchor.y, spot.z - shape.anchor.z};
 }
 
-/// Whether the shape with its anchor on spot lies inside the volume and covers only voxels whose id
-/// is 0. `spaciousness` is a lower bound of the spot's distance to the nearest occupied voxel: shape
+/// Whether the shape with its anchor on spot lies inside the volume and covers no occupied voxel.
+/// `spaciousness` is a lower bound of the spot's distance to the nearest occupied voxel: shape
 /// voxels nearer than that are known to be free and are not looked at.
-bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const std::vector<std::int32_t>& ids,
-            Dims dims);
+bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied, Dims dims);
 
 } // namespace solidtex::detail
