@@ -31,9 +31,6 @@ constexpr double kFirstPassShare = 0.85;
 constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
 constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
-// Shapes are made this many at a time per pair, in parallel: the spare waits for the pair's next
-// turn. Fixed, so that the shapes do not depend on the thread count.
-constexpr int kShapesPerBatch = 2;
 
 // A (width, height) box of the photo's particles and how often 3D particles take it.
 struct WeightedPair {
@@ -42,12 +39,6 @@ struct WeightedPair {
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
-
-// A particle made for a pair, ready to be tried at spots.
-struct ReadyShape {
-  ParticleSize size;
-  detail::FitShape fit;  ///< no voxels when the shape came out empty
-};
 
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
@@ -166,7 +157,7 @@ private:
     roundUp_ = false;
     ratio_ = photoRatio_;
     pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
-    shapes_.clear();                   // made at the larger sizes
+    shapesMade_.clear();
     for (auto& failures : failures_) failures.clear();
     scale_ = options_.voxelsPerPixel;
     startSizeEstimates();
@@ -255,7 +246,8 @@ private:
     std::vector<WeightedPair>& pairs = pairs_[std::size_t(bin)];
     std::vector<int>& failures = failures_[std::size_t(bin)];
     failures.resize(pairs.size(), 0);
-    std::vector<std::size_t> untried(pairs.size());
+    std::vector<std::size_t>& untried = untried_;
+    untried.resize(pairs.size());
     std::iota(untried.begin(), untried.end(), 0);
     bool placed = false;
     while (!untried.empty() && !placed) {
@@ -278,32 +270,17 @@ private:
     return placed;
   }
 
+  // The n-th shape of a pair comes from its own stream (seed, top-up, bin, pair, n), not from rng_:
+  // it is made while the field takes the previous particle, which draws nothing.
   bool tryPair(const WeightedPair& pair, int bin) {
-    const ReadyShape shape = nextShape(pair, bin);
-    return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
-  }
-
-  // Shape n of a pair is drawn from its own stream (seed, bin, pair, n, top-up), whoever makes it.
-  ReadyShape nextShape(const WeightedPair& pair, int bin) {
-    ShapeQueue& queue = shapes_[{bin, pair.width, pair.height}];
-    if (queue.next == queue.ready.size()) {
-      queue.ready.assign(kShapesPerBatch, {});
-      queue.next = 0;
-      tbb::parallel_for(0, kShapesPerBatch, [&](int i) {
-        std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + (toppedUp_ ? 1 : 0));
-        for (const std::uint64_t part : {std::uint64_t(bin), std::uint64_t(pair.width), std::uint64_t(pair.height),
-                                         queue.made + std::uint64_t(i)})
-          stream = deriveSeed(stream, part);
-        Rng rng(stream);
-        ReadyShape& shape = queue.ready[std::size_t(i)];
-        shape.size = factory_.pickDepth(pair.width, pair.height, rng);
-        const VoxelShape voxels =
-            factory_.make(int(scaled(shape.size.width)), int(scaled(shape.size.height)), int(scaled(shape.size.depth)), rng);
-        if (voxels.voxelCount() > 0) shape.fit = detail::prepareShape(voxels);
-      });
-      queue.made += kShapesPerBatch;
-    }
-    return std::move(queue.ready[queue.next++]);
+    std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + (toppedUp_ ? 1 : 0));
+    for (const std::uint64_t part : {std::uint64_t(bin), std::uint64_t(pair.width), std::uint64_t(pair.height),
+                                     shapesMade_[{bin, pair.width, pair.height}]++})
+      stream = deriveSeed(stream, part);
+    Rng rng(stream);
+    const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng);
+    const VoxelShape shape = factory_.make(int(scaled(size.width)), int(scaled(size.height)), int(scaled(size.depth)), rng);
+    return shape.voxelCount() > 0 && place(detail::prepareShape(shape), size, bin);
   }
 
   // Best fit (paper 3.7): the smallest spots that may hold the shape first, checked voxel by voxel.
@@ -372,12 +349,7 @@ private:
   SpaciousnessField& field_;
   const PlacementOptions& options_;
   BinPairs pairs_;
-  struct ShapeQueue {
-    std::vector<ReadyShape> ready;
-    std::size_t next = 0;
-    std::uint64_t made = 0;
-  };
-  std::map<std::array<int, 3>, ShapeQueue> shapes_;  ///< per (bin, width, height): shapes made ahead
+  std::map<std::array<int, 3>, std::uint64_t> shapesMade_;  ///< per (bin, width, height)
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;
   std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
@@ -392,6 +364,7 @@ private:
   detail::VoxelBits occupied_;
   detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
+  std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
   std::vector<Voxel> volumeVoxels_;  ///< the last particle's, read by fieldUpdate_
   tbb::task_group fieldUpdate_;
 };
