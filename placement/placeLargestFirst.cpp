@@ -31,6 +31,7 @@ constexpr double kFirstPassShare = 0.85;
 constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
 constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
+constexpr std::uint64_t kPairStream = 0x7061697273;   // "pairs"
 
 // A (width, height) box of the photo's particles and how often 3D particles take it.
 struct WeightedPair {
@@ -39,6 +40,14 @@ struct WeightedPair {
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
+
+// A particle made for a pair, ready to be tried at spots.
+struct ReadyShape {
+  ParticleSize size;
+  detail::FitShape fit;  ///< no voxels when the shape came out empty
+};
+
+using ShapeKey = std::array<int, 3>;  // bin, width, height
 
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
@@ -100,6 +109,7 @@ public:
          const PlacementOptions& options)
       : stats_(stats), factory_(factory), field_(field), options_(options),
         pairs_(pairsPerBin(stats, options.particleWeights)), rng_(deriveSeed(options.seed, kPlacementStream)),
+        pairRng_(deriveSeed(options.seed, kPairStream)),
         occupied_(options.dims.count()), tried_(options.dims.count()) {
     const BinPairs photoPairs = pairsPerBin(stats, {});
     double total = 0, photoTotal = 0;
@@ -153,11 +163,13 @@ private:
   // small particles jams early): once no bin of those shares fits, the photo's shares fill the rest.
   bool topUpWithThePhotosShares() {
     if (options_.particleWeights.empty() || toppedUp_) return false;
+    keepShapeMadeAhead();  // made at the larger sizes: dropped below
     toppedUp_ = true;
     roundUp_ = false;
     ratio_ = photoRatio_;
     pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
     shapesMade_.clear();
+    shapesKept_.clear();
     for (auto& failures : failures_) failures.clear();
     scale_ = options_.voxelsPerPixel;
     startSizeEstimates();
@@ -242,6 +254,8 @@ private:
   // Pairs of the bin in random order, by weight, until one is placed; false when none fits.
   // A pair that found no spot kFailuresToRetire times running is retired: the volume only fills, so
   // it would hardly find one later, and retrying it is where the time would go in a crowded volume.
+  // The pairs are drawn from their own stream, so the pair after the one being tried is known, and
+  // its shape is made meanwhile (kept for its next turn if this one fits).
   bool attempt(int bin) {
     std::vector<WeightedPair>& pairs = pairs_[std::size_t(bin)];
     std::vector<int>& failures = failures_[std::size_t(bin)];
@@ -249,11 +263,19 @@ private:
     std::vector<std::size_t>& untried = untried_;
     untried.resize(pairs.size());
     std::iota(untried.begin(), untried.end(), 0);
-    bool placed = false;
-    while (!untried.empty() && !placed) {
-      const std::size_t pick = drawByWeight(pairs, untried, rng_);
+    const auto drawUntried = [&] {
+      const std::size_t pick = drawByWeight(pairs, untried, pairRng_);
       const std::size_t pair = untried[pick];
       untried.erase(untried.begin() + std::ptrdiff_t(pick));
+      return pair;
+    };
+    bool placed = false;
+    for (std::size_t pair = drawUntried(), next = 0; !placed; pair = next) {
+      const bool more = !untried.empty();
+      if (more) {
+        next = drawUntried();
+        makeAhead(pairs[next], bin);
+      }
       placed = tryPair(pairs[pair], bin);
       if (placed) {
         failures[pair] = 0;
@@ -261,6 +283,7 @@ private:
         ++failures[pair];
         ++result_.rejectedPerBin[std::size_t(bin)];
       }
+      if (!more) break;
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
@@ -270,17 +293,47 @@ private:
     return placed;
   }
 
-  // The n-th shape of a pair comes from its own stream (seed, top-up, bin, pair, n), not from rng_:
-  // it is made while the field takes the previous particle, which draws nothing.
   bool tryPair(const WeightedPair& pair, int bin) {
+    const ReadyShape shape = takeShape({bin, pair.width, pair.height});
+    return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
+  }
+
+  // The n-th shape of a pair comes from its own stream (seed, top-up, bin, pair, n), whenever and
+  // wherever it is made; a pair's shapes are taken in that order.
+  ReadyShape makeShape(const ShapeKey& key, std::uint64_t n) const {
     std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + (toppedUp_ ? 1 : 0));
-    for (const std::uint64_t part : {std::uint64_t(bin), std::uint64_t(pair.width), std::uint64_t(pair.height),
-                                     shapesMade_[{bin, pair.width, pair.height}]++})
-      stream = deriveSeed(stream, part);
-    Rng rng(stream);
-    const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng);
-    const VoxelShape shape = factory_.make(int(scaled(size.width)), int(scaled(size.height)), int(scaled(size.depth)), rng);
-    return shape.voxelCount() > 0 && place(detail::prepareShape(shape), size, bin);
+    for (const int part : key) stream = deriveSeed(stream, std::uint64_t(part));
+    Rng rng(deriveSeed(stream, n));
+    ReadyShape shape;
+    shape.size = factory_.pickDepth(key[1], key[2], rng);
+    const VoxelShape voxels =
+        factory_.make(int(scaled(shape.size.width)), int(scaled(shape.size.height)), int(scaled(shape.size.depth)), rng);
+    if (voxels.voxelCount() > 0) shape.fit = detail::prepareShape(voxels);
+    return shape;
+  }
+
+  // Starts making the pair's next shape on another thread, unless one is kept for it already.
+  void makeAhead(const WeightedPair& pair, int bin) {
+    keepShapeMadeAhead();
+    const ShapeKey key{bin, pair.width, pair.height};
+    if (shapesKept_.count(key)) return;
+    ahead_.key = key;
+    shapeAhead_.run([this, key, n = shapesMade_[key]++] { ahead_.shape = makeShape(key, n); });
+  }
+
+  void keepShapeMadeAhead() {
+    shapeAhead_.wait();
+    if (ahead_.key[1] > 0) shapesKept_.emplace(ahead_.key, std::move(ahead_.shape));
+    ahead_.key = {};
+  }
+
+  ReadyShape takeShape(const ShapeKey& key) {
+    if (ahead_.key == key) keepShapeMadeAhead();
+    const auto kept = shapesKept_.find(key);
+    if (kept == shapesKept_.end()) return makeShape(key, shapesMade_[key]++);
+    ReadyShape shape = std::move(kept->second);
+    shapesKept_.erase(kept);
+    return shape;
   }
 
   // Best fit (paper 3.7): the smallest spots that may hold the shape first, checked voxel by voxel.
@@ -335,6 +388,7 @@ private:
 
   PlacementResult finish(const std::string& reason) {
     fieldUpdate_.wait();
+    shapeAhead_.wait();
     result_.stopReason = reason;
     result_.volumeFraction = fraction();
     const auto placed = double(result_.particles.size());
@@ -349,9 +403,16 @@ private:
   SpaciousnessField& field_;
   const PlacementOptions& options_;
   BinPairs pairs_;
-  std::map<std::array<int, 3>, std::uint64_t> shapesMade_;  ///< per (bin, width, height)
+  std::map<ShapeKey, std::uint64_t> shapesMade_;  ///< shapes made (or being made) per pair
+  std::map<ShapeKey, ReadyShape> shapesKept_;    ///< made ahead, not taken yet
+  struct {
+    ShapeKey key{};  ///< width 0: none
+    ReadyShape shape;
+  } ahead_;  ///< the shape shapeAhead_ makes
+  tbb::task_group shapeAhead_;
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
-  Rng rng_;
+  Rng rng_;      ///< best-fit draws
+  Rng pairRng_;  ///< the order pairs are tried in
   std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
