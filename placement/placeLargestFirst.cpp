@@ -132,6 +132,16 @@ public:
     targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(options.dims.count()));
   }
 
+  // A task may still run when an exception leaves run(): wait for it, and drop its own error.
+  ~Placer() {
+    for (tbb::task_group* tasks : {&fieldUpdate_, &shapeAhead_}) {
+      try {
+        tasks->wait();
+      } catch (...) {  // one exception is on its way already
+      }
+    }
+  }
+
   PlacementResult run() {
     if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
     for (;;) {
@@ -258,6 +268,7 @@ private:
   // its shape is made meanwhile (kept for its next turn if this one fits).
   bool attempt(int bin) {
     std::vector<WeightedPair>& pairs = pairs_[std::size_t(bin)];
+    if (pairs.empty()) return false;
     std::vector<int>& failures = failures_[std::size_t(bin)];
     failures.resize(pairs.size(), 0);
     std::vector<std::size_t>& untried = untried_;
@@ -287,6 +298,7 @@ private:
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
+        shapesKept_.erase({bin, pairs[i].width, pairs[i].height});
         pairs.erase(pairs.begin() + std::ptrdiff_t(i));
         failures.erase(failures.begin() + std::ptrdiff_t(i));
       }
@@ -404,12 +416,6 @@ private:
   const PlacementOptions& options_;
   BinPairs pairs_;
   std::map<ShapeKey, std::uint64_t> shapesMade_;  ///< shapes made (or being made) per pair
-  std::map<ShapeKey, ReadyShape> shapesKept_;    ///< made ahead, not taken yet
-  struct {
-    ShapeKey key{};  ///< width 0: none
-    ReadyShape shape;
-  } ahead_;  ///< the shape shapeAhead_ makes
-  tbb::task_group shapeAhead_;
   std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;      ///< best-fit draws
   Rng pairRng_;  ///< the order pairs are tried in
@@ -426,6 +432,13 @@ private:
   detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
   std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
+  // Last, so that the tasks end before what they read is gone.
+  std::map<ShapeKey, ReadyShape> shapesKept_;  ///< made ahead, not taken yet
+  struct {
+    ShapeKey key{};  ///< width 0: none
+    ReadyShape shape;
+  } ahead_;  ///< the shape shapeAhead_ makes
+  tbb::task_group shapeAhead_;
   std::vector<Voxel> volumeVoxels_;  ///< the last particle's, read by fieldUpdate_
   tbb::task_group fieldUpdate_;
 };

@@ -23,7 +23,8 @@ struct PlacementOptions {
   /// area fraction is reached, the photo's frequencies fill the rest, at the photo's sizes.
   std::vector<double> particleWeights;
   double sizeFactor = 1;          ///< with particleWeights: their particles are this many times the photo's sizes
-  std::function<void(double fraction, int placed)> progress;  ///< called now and then; may be empty
+  /// Called now and then, while the field may be taking the last particle: it must not read the field. May be empty.
+  std::function<void(double fraction, int placed)> progress;
 };
 
 /// One particle in the volume.

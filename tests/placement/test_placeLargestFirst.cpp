@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include <opencv2/imgproc.hpp>
+#include <tbb/global_control.h>
 
 #include "common/Error.h"
 #include "placement/placeLargestFirst.h"
@@ -151,6 +152,9 @@ TEST_P(PlaceLargestFirst, IsDeterministicForTheSeed) {
   const PlacementResult a = place(stats, GetParam(), {32, 32, 32}, 9);
   EXPECT_EQ(a.ids, place(stats, GetParam(), {32, 32, 32}, 9).ids);
   EXPECT_NE(a.ids, place(stats, GetParam(), {32, 32, 32}, 10).ids);
+  // Fields, shapes made ahead and the field update on another thread: the same with one thread.
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_EQ(a.ids, place(stats, GetParam(), {32, 32, 32}, 9).ids);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, PlaceLargestFirst,

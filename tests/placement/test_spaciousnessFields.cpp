@@ -86,7 +86,7 @@ TEST_P(FieldTest, BestFitGivesDistinctFreeSpotsSmallestFirst) {
       EXPECT_GE(exact[kDims.index(spots[i])], radius - field->slack() - 1e-6);
       EXPECT_GE(field->at(spots[i]), radius - field->slack());
       EXPECT_EQ(std::count(spots.begin(), spots.end(), spots[i]), 1);
-      // The Delaunay field orders by its candidates' values, which at() (exact) may exceed.
+      // The Delaunay field orders by its candidates' values, not by at() (a bound from the nearest vertex).
       if (i > 0 && GetParam() != PlacerKind::Delaunay) {
         EXPECT_LE(field->at(spots[i - 1]), field->at(spots[i]));
       }
