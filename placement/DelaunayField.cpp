@@ -4,12 +4,14 @@
 // cell's candidate is dropped as soon as an insertion destroys the cell (find_conflicts +
 // insert_in_hole tell exactly which cells die). The only CGAL translation unit of placement/.
 //
-// The sample: every boundary voxel is a triangulation vertex or 6-adjacent to one, so a ball empty
-// of the vertices is empty of the particles once shrunk by one voxel (the field's slack). Voxels
-// with x + y + z divisible by 3 are such a sample wherever the surface is locally flat (each of the
-// other two residues has a neighbour of residue 0 along every axis); a voxel whose neighbours of
-// residue 0 are all inside or free joins the sample. That is about 40 % of the boundary voxels, and
-// the triangulation's time and memory follow its vertex count.
+// The sample: every boundary voxel that faces free space when its particle goes in becomes a
+// triangulation vertex or is 6-adjacent to one. The voxel nearest to any free voxel faces free
+// space (see facesFreeSpace) and did so when it went in, as space only fills; so a ball empty of
+// the vertices is empty of the particles once shrunk by one voxel (the field's slack). Voxels with
+// x + y + z divisible by 3 are such a sample wherever the surface is locally flat (each of the other
+// two residues has a neighbour of residue 0 along every axis); a voxel with no sampled 6-neighbour
+// yet (of this particle or an earlier one) joins the sample. That is about 40 % of the boundary
+// voxels, and the triangulation's time and memory follow its vertex count.
 #include <algorithm>
 #include <array>
 #include <cmath>
