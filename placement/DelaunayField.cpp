@@ -151,7 +151,8 @@ public:
     addPendingCandidates();
   }
 
-  // The nearest vertex less its jitter is the distance to the sample, less the slack a sure bound.
+  // The nearest vertex's distance less its jitter bounds the distance to the sample; less the slack
+  // too, the distance to the particles.
   float at(const Voxel& v) const override {
     checkInside(dims_, v);
     if (isOccupied(dims_.index(v))) return 0;

@@ -42,7 +42,8 @@ public:
   virtual float slack() const { return 0; }
   /// The spots bestFit picks from with the values it ranks them by, for a field that keeps
   /// candidates apart from its voxels (Delaunay: rounded circumcentres, valued by their circumradius
-  /// less the rounding and the jitter of its vertices). Empty for the grid fields, whose every free voxel is a candidate valued at().
+  /// less the rounding and the jitter of its vertices). Empty for the grid fields, whose every free
+  /// voxel is a candidate valued at().
   virtual std::vector<std::pair<Voxel, float>> candidates() const { return {}; }
 };
 

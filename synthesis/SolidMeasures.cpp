@@ -16,8 +16,6 @@ namespace solidtex::synthesis {
 
 namespace {
 
-constexpr double kEnergyExponent = 0.8;  // Kopf et al.'s and Chen and Wang's gamma
-
 /// Periodic trilinear sample of the volume at continuous voxel coordinates.
 void sampleTrilinear(const WorkVolume& v, const Eigen::Vector3d& p, float* out) {
   int i0[3];
@@ -100,7 +98,7 @@ SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const Mea
   }
 
   const std::vector<double> axis = nearestSquaredDistances(axisQ, ex), oblique = nearestSquaredDistances(obliqueQ, ex);
-  return {meanPower(axis, kEnergyExponent), meanPower(oblique, kEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
+  return {meanPower(axis, kSliceEnergyExponent), meanPower(oblique, kSliceEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
 }
 
 double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImage& exemplar, int bins) {

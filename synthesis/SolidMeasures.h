@@ -17,6 +17,9 @@ struct MeasureOptions {
   int histogramBins = 8;       ///< per channel, for the joint colour histogram
 };
 
+/// Kopf et al.'s and Chen and Wang's gamma in eq. 1.
+inline constexpr double kSliceEnergyExponent = 0.8;
+
 /// Slice energy, Kopf's and Chen and Wang's eq. 1: the mean over sampled slice neighbourhoods of
 /// ||s - e||^gamma, e the nearest exemplar neighbourhood (exact, full dimension), gamma = 0.8, the
 /// distance taken per component (RMS over the vector, colours sRGB in [0,1]) so that sizes compare.

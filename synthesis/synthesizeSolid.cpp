@@ -242,7 +242,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     for (std::int64_t h : indexHistogram) usedIndices += h > 0;
     report["quality"] = {{"energyAxis", energy.axis},
                          {"energyOblique", energy.oblique},
-                         {"energyExponent", 0.8},
+                         {"energyExponent", kSliceEnergyExponent},
                          {"energyAxisSquared", energy.axisSquared},
                          {"energyObliqueSquared", energy.obliqueSquared},
                          {"energyNeighborhood", std::min({o.measureOptions.neighborhood, finest.width, finest.height})},
