@@ -5,7 +5,7 @@
 //   energy_diagnostics chen-wang SIZE EXEMPLAR.png...   chen-wang's volume as is and blurred (sigma 0.5-1.0)
 //   energy_diagnostics kopf SIZE EXEMPLAR.png...        kopf's volume as is and snapped voxel by voxel to
 //                                                       the nearest exemplar colour
-// Seed 1, one thread. Each line: E axis/oblique, the squared forms, position coverage (-1: no
+// Seed 1 (the output does not depend on the thread count). Each line: E axis/oblique, the squared forms, position coverage (-1: no
 // sources), colour TV.
 #include <algorithm>
 #include <cmath>
@@ -126,7 +126,6 @@ int main(int argc, char** argv) {
     SynthesisOptions o;
     o.method = parseMethod(mode);
     o.size = size;
-    o.threads = 1;
     const SynthesisResult result = synthesizeSolid(rgb, o);
     const WorkVolume v = srgbVolumeOf(result.volume, ex.width);
     show("as-is", v);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -281,20 +282,17 @@ private:
       return pair;
     };
     bool placed = false;
-    for (std::size_t pair = drawUntried(), next = 0; !placed; pair = next) {
-      const bool more = !untried.empty();
-      if (more) {
-        next = drawUntried();
-        makeAhead(pairs[next], bin);
-      }
-      placed = tryPair(pairs[pair], bin);
+    for (std::optional<std::size_t> pair = drawUntried(); pair && !placed;) {
+      const std::optional<std::size_t> next = untried.empty() ? std::nullopt : std::optional(drawUntried());
+      if (next) makeAhead(pairs[*next], bin);
+      placed = tryPair(pairs[*pair], bin);
       if (placed) {
-        failures[pair] = 0;
+        failures[*pair] = 0;
       } else {
-        ++failures[pair];
+        ++failures[*pair];
         ++result_.rejectedPerBin[std::size_t(bin)];
       }
-      if (!more) break;
+      pair = next;
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
@@ -335,8 +333,8 @@ private:
 
   void keepShapeMadeAhead() {
     shapeAhead_.wait();
-    if (ahead_.key[1] > 0) shapesKept_.emplace(ahead_.key, std::move(ahead_.shape));
-    ahead_.key = {};
+    if (ahead_.key) shapesKept_.emplace(*ahead_.key, std::move(ahead_.shape));
+    ahead_.key.reset();
   }
 
   ReadyShape takeShape(const ShapeKey& key) {
@@ -428,16 +426,16 @@ private:
   double targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;
   PlacementResult result_;
-  detail::VoxelBits occupied_;
+  detail::VoxelBits occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
   detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
   std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
   // Last, so that the tasks end before what they read is gone.
   std::map<ShapeKey, ReadyShape> shapesKept_;  ///< made ahead, not taken yet
   struct {
-    ShapeKey key{};  ///< width 0: none
+    std::optional<ShapeKey> key;
     ReadyShape shape;
-  } ahead_;  ///< the shape shapeAhead_ makes
+  } ahead_;  ///< the shape shapeAhead_ makes, for the pair `key`
   tbb::task_group shapeAhead_;
   std::vector<Voxel> volumeVoxels_;  ///< the last particle's, read by fieldUpdate_
   tbb::task_group fieldUpdate_;
