@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "segmentation/analyzeExemplar.h"
-#include "voxel/sectionStatistics.h"
+#include "validation/sectionStatistics.h"
 
 namespace solidtex {
 

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "voxel/ellipsoidTruth.h"
+#include "validation/ellipsoidTruth.h"
 
 namespace solidtex {
 

@@ -10,7 +10,7 @@
 #include "pipeline/jobSupport.h"
 #include "pipeline/compareJob.h"
 #include "pipeline/particleSolidJob.h"
-#include "voxel/sectionStatistics.h"
+#include "validation/sectionStatistics.h"
 #include "voxel/vdbIO.h"
 
 namespace solidtex {

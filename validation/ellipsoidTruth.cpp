@@ -1,4 +1,4 @@
-#include "voxel/ellipsoidTruth.h"
+#include "validation/ellipsoidTruth.h"
 
 #include <algorithm>
 #include <cmath>

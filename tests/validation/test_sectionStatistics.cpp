@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "voxel/sectionStatistics.h"
+#include "validation/sectionStatistics.h"
 
 namespace solidtex {
 namespace {

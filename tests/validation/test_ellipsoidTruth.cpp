@@ -6,7 +6,7 @@
 
 #include "common/Error.h"
 #include "segmentation/analyzeExemplar.h"
-#include "voxel/ellipsoidTruth.h"
+#include "validation/ellipsoidTruth.h"
 
 namespace solidtex {
 namespace {

@@ -1,4 +1,4 @@
-#include "voxel/sectionStatistics.h"
+#include "validation/sectionStatistics.h"
 
 #include <algorithm>
 #include <cmath>
