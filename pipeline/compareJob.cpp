@@ -9,6 +9,7 @@
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
+#include "validation/compareSections.h"
 #include "voxel/vdbIO.h"
 
 namespace solidtex {
@@ -37,24 +38,58 @@ double mean(const std::vector<double>& values) {
   return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
-// Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare.
-nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale) {
-  const SolidVolume truth = readVdb(truthPath);
-  if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
+nlohmann::json summaryJson(const SectionSummary& s) {
+  return {{"shapes", s.shapes},          {"solidity_mean", s.solidity},       {"roundness_mean", s.roundness},
+          {"windows", s.windows},        {"window_spread", s.windowSpread},   {"neighbours", s.neighbours},
+          {"neighbour_distance_mean", s.neighbourDistance}};
+}
+
+nlohmann::json comparisonJson(const SectionComparison& c, const char* referenceName) {
+  return {{referenceName, summaryJson(c.reference)},
+          {"sections", summaryJson(c.solid)},
+          {"solidity_ks", c.solidityKs},
+          {"roundness_ks", c.roundnessKs},
+          {"window_spread_ratio", c.windowSpreadRatio},
+          {"neighbour_distance_ks", c.neighbourKs},
+          {"neighbour_distance_ratio", c.neighbourRatio}};
+}
+
+double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
   const auto it = truth.metadata.find("voxels_per_pixel");
   const double truthScale = it == truth.metadata.end() ? 1.0 : std::strtod(it->second.c_str(), nullptr);
   if (!(truthScale > 0) || !std::isfinite(truthScale))
     throw InputError(truthPath + " has a voxels_per_pixel that is not a positive number");
+  return truthScale;
+}
+
+// Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
+// the truth's sections are cut at the solid's resolution so that their shapes compare too.
+nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale,
+                                const SectionStatistics& solidSections, SectionOptions sectionOptions, double diameter) {
+  const SolidVolume truth = readVdb(truthPath);
+  if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
+  const double truthScale = truthScaleOf(truthPath, truth);
   std::vector<double> truthVolumes = particleVolumes(truth);
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
   for (double& v : volumes) v /= scale * scale * scale;
   const double truthMean = mean(truthVolumes);
-  return {{"truth", truthPath},
-          {"particles", truthVolumes.size()},
-          {"mean_volume", truthMean},
-          {"solid_mean_volume", mean(volumes)},
-          {"volume_ks", ksStatistic(truthVolumes, volumes)},
-          {"volume_wasserstein1_over_mean", truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}};
+  sectionOptions.step = truthScale / scale;
+  const SectionStatistics truthSections = sampleSections(truth.dims, truth.particleId, sectionOptions);
+  nlohmann::json report = comparisonJson(compareSections(truthSections, solidSections, diameter), "truth_sections");
+  report.update({{"truth", truthPath},
+                 {"particles", truthVolumes.size()},
+                 {"mean_volume", truthMean},
+                 {"solid_mean_volume", mean(volumes)},
+                 {"section_ks", ksStatistic(truthSections.areas, solidSections.areas)},
+                 {"volume_ks", ksStatistic(truthVolumes, volumes)},
+                 {"volume_wasserstein1_over_mean", truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
+  return report;
+}
+
+// Arrangement windows span a few particle diameters, and at least two fit across the volume.
+int windowSideFor(double diameter, const Dims& dims) {
+  const int smallest = std::min({dims.x, dims.y, dims.z});
+  return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
 } // namespace
@@ -67,16 +102,20 @@ nlohmann::json runCompare(const CompareJob& job) {
   const double scale = scaleOf(job, volume);
 
   std::vector<double> photoAreas;
-  for (const auto& p : stats.particles)
-    if (!p.border) photoAreas.push_back(p.area * scale * scale);
+  for (std::size_t i : statisticalParticles(stats.particles)) photoAreas.push_back(stats.particles[i].area * scale * scale);
+  const double diameter = meanParticleDiameter(stats) * scale;
   SectionOptions sectionOptions = job.sections;
   sectionOptions.minArea = stats.minArea * scale * scale;
+  sectionOptions.windowSide = windowSideFor(diameter, volume.dims);
   const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
+  const SectionStatistics photoSections = measureLabelImage(photoLabels(stats, scale), sectionOptions);
+  const SectionComparison shapes = compareSections(photoSections, sections, diameter);
   const std::vector<double> volumes = particleVolumes(volume);
   std::size_t occupied = 0;
   for (std::int32_t id : volume.particleId) occupied += id > 0;
 
-  ComparisonData data{photoAreas, sections.areas, stats.histogram.ratios, tenBinRatios(volumes)};
+  ComparisonData data{photoAreas, sections.areas, stats.histogram.ratios, tenBinRatios(volumes),
+                      shapes.referenceSolidity, shapes.solidSolidity};
   const double photoMean = mean(photoAreas);
   nlohmann::json report = {
       {"photo", job.photo},
@@ -92,8 +131,11 @@ nlohmann::json runCompare(const CompareJob& job) {
       {"sections", {{"planes", sections.planes}, {"count", sections.areas.size()}, {"mean_area", mean(sections.areas)}}},
       {"photo_mean_area", photoMean},
       {"ks", ksStatistic(photoAreas, sections.areas)},
-      {"wasserstein1_over_mean", photoMean > 0 ? wasserstein1(photoAreas, sections.areas) / photoMean : 0.0}};
-  if (job.truth) report["truth"] = compareWithTruth(*job.truth, volumes, scale);
+      {"wasserstein1_over_mean", photoMean > 0 ? wasserstein1(photoAreas, sections.areas) / photoMean : 0.0},
+      {"shape_and_arrangement", comparisonJson(shapes, "photo")},
+      {"window_side", sectionOptions.windowSide},
+      {"particle_diameter", diameter}};
+  if (job.truth) report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
   if (job.plot) writeImage(*job.plot, plotComparison(data, report));
   if (job.report) writeJsonFile(*job.report, report);
   return report;

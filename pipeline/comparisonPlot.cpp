@@ -46,13 +46,13 @@ cv::Mat histogramPanel(const ComparisonData& data) {
   return panel;
 }
 
-void drawCdf(cv::Mat& panel, std::vector<double> values, double maxX, const cv::Scalar& colour) {
-  if (values.empty()) return;
+void drawCdf(cv::Mat& panel, std::vector<double> values, double minX, double maxX, const cv::Scalar& colour) {
+  if (values.empty() || !(maxX > minX)) return;
   std::sort(values.begin(), values.end());
   const int x0 = kMargin, y0 = kPanelHeight - kMargin, w = kPanelWidth - x0 - 20, h = y0 - 50;
   cv::Point previous(x0, y0);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    const int x = x0 + int(w * std::min(values[i], maxX) / maxX);
+    const int x = x0 + int(w * (std::clamp(values[i], minX, maxX) - minX) / (maxX - minX));
     const int y = y0 - int(h * double(i + 1) / double(values.size()));
     cv::line(panel, previous, {x, previous.y}, colour, 2, cv::LINE_AA);
     cv::line(panel, {x, previous.y}, {x, y}, colour, 2, cv::LINE_AA);
@@ -60,28 +60,55 @@ void drawCdf(cv::Mat& panel, std::vector<double> values, double maxX, const cv::
   }
 }
 
-cv::Mat cdfPanel(const ComparisonData& data, const nlohmann::json& report) {
+// The CDFs of one measure of the photo and of the sections, with lines of figures where the CDFs leave room.
+cv::Mat cdfPanel(const std::string& title, const std::string& xLabel, const std::vector<double>& photo,
+                 const std::vector<double>& sections, double minX, double maxX, const std::vector<std::string>& lines,
+                 int linesX) {
   cv::Mat panel(kPanelHeight, kPanelWidth, CV_32FC3, cv::Scalar(1, 1, 1));
-  axes(panel, "CDF of section areas vs photo particle areas", "area (voxels^2)");
-  double maxX = 1;
-  for (const auto* values : {&data.photoAreas, &data.sectionAreas})
-    if (!values->empty()) maxX = std::max(maxX, *std::max_element(values->begin(), values->end()));
-  drawCdf(panel, data.photoAreas, maxX, kPhotoColour);
-  drawCdf(panel, data.sectionAreas, maxX, kVolumeColour);
-  char line[96];
-  std::snprintf(line, sizeof line, "max %.0f", maxX);
-  text(panel, line, {kPanelWidth - 90, kPanelHeight - kMargin + 16}, 0.4);
-  const int x = kMargin + 190;
-  std::snprintf(line, sizeof line, "KS %.3f   W1/mean %.3f", report.value("ks", 0.0), report.value("wasserstein1_over_mean", 0.0));
-  text(panel, line, {x, kPanelHeight - kMargin - 60}, 0.5);
-  std::snprintf(line, sizeof line, "area fraction: photo %.3f", report.value("area_fraction", 0.0));
-  text(panel, line, {x, kPanelHeight - kMargin - 40}, 0.45);
-  std::snprintf(line, sizeof line, "volume %.3f  sections %.3f", report.value("volume_fraction", 0.0),
-                report.value("section_area_fraction", 0.0));
-  text(panel, line, {x, kPanelHeight - kMargin - 22}, 0.45);
+  axes(panel, title, xLabel);
+  drawCdf(panel, photo, minX, maxX, kPhotoColour);
+  drawCdf(panel, sections, minX, maxX, kVolumeColour);
+  char label[32];
+  std::snprintf(label, sizeof label, "%.3g", minX);
+  text(panel, label, {kMargin - 10, kPanelHeight - kMargin + 16}, 0.4);
+  std::snprintf(label, sizeof label, "%.3g", maxX);
+  text(panel, label, {kPanelWidth - 60, kPanelHeight - kMargin + 16}, 0.4);
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    text(panel, lines[i], {linesX, kPanelHeight - kMargin - 20 - 20 * int(lines.size() - 1 - i)}, 0.45);
   text(panel, "photo", {kPanelWidth - 160, 50}, 0.45, kPhotoColour);
   text(panel, "sections of the solid", {kPanelWidth - 160, 70}, 0.45, kVolumeColour);
   return panel;
+}
+
+std::string format(const char* pattern, double a, double b = 0) {
+  char line[96];
+  std::snprintf(line, sizeof line, pattern, a, b);
+  return line;
+}
+
+cv::Mat areaPanel(const ComparisonData& data, const nlohmann::json& report) {
+  double maxX = 1;
+  for (const auto* values : {&data.photoAreas, &data.sectionAreas})
+    if (!values->empty()) maxX = std::max(maxX, *std::max_element(values->begin(), values->end()));
+  return cdfPanel("CDF of section areas vs photo particle areas", "area (voxels^2)", data.photoAreas,
+                  data.sectionAreas, 0, maxX,
+                  {format("KS %.3f   W1/mean %.3f", report.value("ks", 0.0), report.value("wasserstein1_over_mean", 0.0)),
+                   format("area fraction: photo %.3f", report.value("area_fraction", 0.0)),
+                   format("volume %.3f  sections %.3f", report.value("volume_fraction", 0.0),
+                          report.value("section_area_fraction", 0.0))},
+                  kMargin + 170);
+}
+
+cv::Mat shapePanel(const ComparisonData& data, const nlohmann::json& report) {
+  const nlohmann::json& c = report.at("shape_and_arrangement");
+  return cdfPanel("CDF of solidity (area / convex hull area)", "solidity", data.photoSolidity, data.sectionSolidity,
+                  0.5, 1,
+                  {format("solidity KS %.3f  roundness KS %.3f", c.value("solidity_ks", 0.0), c.value("roundness_ks", 0.0)),
+                   format("window spread: photo %.3f  sections %.3f", c["photo"].value("window_spread", 0.0),
+                          c["sections"].value("window_spread", 0.0)),
+                   format("nearest neighbour / diameter: %.2f vs %.2f", c["photo"].value("neighbour_distance_mean", 0.0),
+                          c["sections"].value("neighbour_distance_mean", 0.0))},
+                  kMargin + 10);
 }
 
 } // namespace
@@ -98,7 +125,7 @@ std::array<double, 10> tenBinRatios(const std::vector<double>& values) {
 
 cv::Mat plotComparison(const ComparisonData& data, const nlohmann::json& report) {
   cv::Mat canvas;
-  cv::hconcat(histogramPanel(data), cdfPanel(data, report), canvas);
+  cv::hconcat(std::vector<cv::Mat>{histogramPanel(data), areaPanel(data, report), shapePanel(data, report)}, canvas);
   return canvas;
 }
 

@@ -13,13 +13,15 @@ struct ComparisonData {
   std::vector<double> sectionAreas;      ///< voxel^2
   std::array<double, 10> areaHistogram;  ///< ratios
   std::array<double, 10> volumeHistogram;
+  std::vector<double> photoSolidity;     ///< of the photo's particles at the solid's resolution
+  std::vector<double> sectionSolidity;
 };
 
 /// Ratios of values in 10 equal-width bins between their min and max (the paper's Fig. 9/10 binning).
 std::array<double, 10> tenBinRatios(const std::vector<double>& values);
 
 /// A chart a person reads at a glance: the photo's area histogram beside the volume's volume
-/// histogram, and the CDF of section areas over the CDF of photo areas, with the report's numbers.
+/// histogram, the CDFs of section and photo areas and of their solidity, with the report's numbers.
 cv::Mat plotComparison(const ComparisonData& data, const nlohmann::json& report);
 
 } // namespace solidtex

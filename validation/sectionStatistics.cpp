@@ -7,54 +7,86 @@
 
 #include "common/Random.h"
 #include "common/randomDirection.h"
+#include "validation/arrangement.h"
 #include "voxel/slice.h"
 
 namespace solidtex {
 namespace {
 
-struct PlaneSections {
-  std::vector<double> areas;
-  std::size_t particlePixels = 0, pixels = 0;
-};
-
 // Pixels of a plane's window that fall outside the volume.
 constexpr std::int32_t kOutside = -1;
 
-/// Labels 8-connected runs of equal particle ids by flood fill; one reused stack, no per-pixel allocation.
-PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, int height, double minArea) {
-  PlaneSections out;
-  out.pixels = std::size_t(std::count_if(image.begin(), image.end(), [](std::int32_t id) { return id != kOutside; }));
-  std::vector<std::uint8_t> seen(image.size(), 0);
-  std::vector<int> stack;
-  for (int start = 0; start < int(image.size()); ++start) {
-    const std::int32_t id = image[std::size_t(start)];
-    if (id <= 0 || seen[std::size_t(start)]) continue;
-    std::size_t area = 0;
-    bool edge = false;
-    stack.assign(1, start);
-    seen[std::size_t(start)] = 1;
-    while (!stack.empty()) {
-      const int p = stack.back();
-      stack.pop_back();
-      ++area;
-      const int x = p % width, y = p / width;
-      const int neighbours[8][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1},
-                                     {x - 1, y - 1}, {x + 1, y - 1}, {x - 1, y + 1}, {x + 1, y + 1}};
-      for (const auto& [nx, ny] : neighbours) {
-        if (nx < 0 || ny < 0 || nx >= width || ny >= height) {
-          edge = true;
-          continue;
-        }
-        const int q = ny * width + nx;
-        edge |= image[std::size_t(q)] == kOutside;
-        if (!seen[std::size_t(q)] && image[std::size_t(q)] == id) {
-          seen[std::size_t(q)] = 1;
-          stack.push_back(q);
-        }
+struct Region {
+  std::vector<cv::Point> pixels;
+  bool cut = false;  // touches the image's edge or the volume's walls
+};
+
+/// Visits the 8-connected regions of equal positive labels by flood fill, one reused stack.
+template <typename Visit>
+void forEachRegion(const cv::Mat& labels, Visit&& visit) {
+  const int width = labels.cols, height = labels.rows;
+  std::vector<std::uint8_t> seen(std::size_t(width) * std::size_t(height), 0);
+  std::vector<cv::Point> stack;
+  Region region;
+  for (int y0 = 0; y0 < height; ++y0)
+    for (int x0 = 0; x0 < width; ++x0) {
+      const std::int32_t id = labels.at<std::int32_t>(y0, x0);
+      if (id <= 0 || seen[std::size_t(y0) * width + x0]) continue;
+      region.pixels.clear();
+      region.cut = false;
+      stack.assign(1, {x0, y0});
+      seen[std::size_t(y0) * width + x0] = 1;
+      while (!stack.empty()) {
+        const cv::Point p = stack.back();
+        stack.pop_back();
+        region.pixels.push_back(p);
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = p.x + dx, ny = p.y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) {
+              region.cut = true;
+              continue;
+            }
+            const std::int32_t neighbour = labels.at<std::int32_t>(ny, nx);
+            region.cut |= neighbour == kOutside;
+            if (neighbour == id && !seen[std::size_t(ny) * width + nx]) {
+              seen[std::size_t(ny) * width + nx] = 1;
+              stack.push_back({nx, ny});
+            }
+          }
       }
+      visit(region);
     }
-    out.particlePixels += area;
-    if (!edge && double(area) >= minArea) out.areas.push_back(double(area));
+}
+
+/// Every measure of one image; arrangement measures only where the whole window lies in the volume.
+SectionStatistics measureImage(const cv::Mat& labels, bool axisAligned, const SectionOptions& options) {
+  SectionStatistics out;
+  out.planes = 1;
+  std::vector<cv::Point2d> centres;
+  std::vector<bool> counted;
+  std::size_t particlePixels = 0, pixels = 0;
+  for (int y = 0; y < labels.rows; ++y)
+    for (int x = 0; x < labels.cols; ++x) {
+      const std::int32_t id = labels.at<std::int32_t>(y, x);
+      pixels += id != kOutside;
+      particlePixels += id > 0;
+    }
+  forEachRegion(labels, [&](const Region& region) {
+    const double area = double(region.pixels.size());
+    if (area < options.minArea) return;
+    if (!region.cut) out.areas.push_back(area);
+    if (!region.cut && area >= options.shapeMinArea) out.shapes.push_back(measureRegion(region.pixels));
+    if (!axisAligned) return;
+    cv::Point2d sum(0, 0);
+    for (const cv::Point& p : region.pixels) sum += cv::Point2d(p);
+    centres.push_back(sum / area);
+    counted.push_back(!region.cut);
+  });
+  out.areaFraction = pixels ? double(particlePixels) / double(pixels) : 0;
+  if (axisAligned && options.windowSide > 0) {
+    out.windowFractions = windowFractions(labels, options.windowSide);
+    out.neighbourDistances = nearestNeighbourDistances(centres, counted, labels.size());
   }
   return out;
 }
@@ -62,11 +94,22 @@ PlaneSections measurePlane(const std::vector<std::int32_t>& image, int width, in
 /// The square window of the plane through `through` with this normal that covers the plane's whole
 /// intersection with the volume: an inscribed window would cut the larger sections more often and
 /// bias the areas small.
-SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const Eigen::Vector3d& through) {
+SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const Eigen::Vector3d& through, double step) {
   SlicePlane plane = obliquePlane(dims, normal, through);
-  const int side = int(std::ceil(std::sqrt(double(dims.x) * dims.x + double(dims.y) * dims.y + double(dims.z) * dims.z))) + 1;
-  plane.width = plane.height = side;
-  plane.origin = through - (side - 1) * 0.5 * (plane.u + plane.v);
+  const double diagonal = std::sqrt(double(dims.x) * dims.x + double(dims.y) * dims.y + double(dims.z) * dims.z);
+  plane.width = plane.height = int(std::ceil(diagonal / step)) + 1;
+  plane.u *= step;
+  plane.v *= step;
+  plane.origin = through - (plane.width - 1) * 0.5 * (plane.u + plane.v);
+  return plane;
+}
+
+SlicePlane steppedAxisPlane(const Dims& dims, int axis, int index, double step) {
+  SlicePlane plane = axisPlane(dims, axis, index);
+  plane.width = int((plane.width - 1) / step) + 1;
+  plane.height = int((plane.height - 1) / step) + 1;
+  plane.u *= step;
+  plane.v *= step;
   return plane;
 }
 
@@ -75,7 +118,7 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
   const int extent[3] = {dims.x, dims.y, dims.z};
   for (int axis = 0; axis < 3; ++axis)
     for (int i = 0; i < options.offsetsPerAxis; ++i)
-      planes.push_back(axisPlane(dims, axis, int((i + 0.5) * extent[axis] / options.offsetsPerAxis)));
+      planes.push_back(steppedAxisPlane(dims, axis, int((i + 0.5) * extent[axis] / options.offsetsPerAxis), options.step));
   Rng rng(deriveSeed(options.seed, 0x5EC7));
   const Eigen::Vector3d centre((dims.x - 1) * 0.5, (dims.y - 1) * 0.5, (dims.z - 1) * 0.5);
   const double spread = 0.25 * std::min({dims.x, dims.y, dims.z});
@@ -83,7 +126,7 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
     const Eigen::Vector3d normal = randomDirection(rng);
     // Off-centre planes along the normal sample particles at every depth, not only the middle.
     const Eigen::Vector3d through = centre + (2 * uniform01(rng) - 1) * spread * normal;
-    planes.push_back(coveringPlane(dims, normal, through));
+    planes.push_back(coveringPlane(dims, normal, through, options.step));
   }
   return planes;
 }
@@ -92,21 +135,35 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
 
 SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids, const SectionOptions& options) {
   const std::vector<SlicePlane> planes = planesFor(dims, options);
-  std::vector<PlaneSections> perPlane(planes.size());
+  const std::size_t axisPlanes = std::size_t(3 * options.offsetsPerAxis);
+  std::vector<SectionStatistics> perPlane(planes.size());
+  std::vector<std::size_t> pixels(planes.size());
   tbb::parallel_for(std::size_t(0), planes.size(), [&](std::size_t i) {
     const SlicePlane& plane = planes[i];
-    perPlane[i] = measurePlane(slice(dims, ids, plane, kOutside), plane.width, plane.height, options.minArea);
+    std::vector<std::int32_t> image = slice(dims, ids, plane, kOutside);
+    pixels[i] = std::size_t(std::count_if(image.begin(), image.end(), [](std::int32_t id) { return id != kOutside; }));
+    perPlane[i] = measureImage(cv::Mat(plane.height, plane.width, CV_32S, image.data()), i < axisPlanes, options);
   });
   SectionStatistics stats;
-  std::size_t particlePixels = 0, pixels = 0;
-  for (const auto& p : perPlane) {
-    stats.areas.insert(stats.areas.end(), p.areas.begin(), p.areas.end());
-    particlePixels += p.particlePixels;
-    pixels += p.pixels;
+  double particlePixels = 0, allPixels = 0;
+  const auto append = [](std::vector<auto>& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    const SectionStatistics& p = perPlane[i];
+    append(stats.areas, p.areas);
+    append(stats.shapes, p.shapes);
+    append(stats.windowFractions, p.windowFractions);
+    append(stats.neighbourDistances, p.neighbourDistances);
+    particlePixels += p.areaFraction * double(pixels[i]);
+    allPixels += double(pixels[i]);
   }
   stats.planes = int(planes.size());
-  stats.areaFraction = pixels ? double(particlePixels) / double(pixels) : 0;
+  stats.areaFraction = allPixels > 0 ? particlePixels / allPixels : 0;
   return stats;
+}
+
+SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions& options) {
+  CV_Assert(labels.type() == CV_32S);
+  return measureImage(labels, true, options);
 }
 
 double ksStatistic(std::vector<double> a, std::vector<double> b) {

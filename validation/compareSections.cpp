@@ -1,0 +1,80 @@
+#include "validation/compareSections.h"
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
+
+#include "validation/arrangement.h"
+
+namespace solidtex {
+namespace {
+
+double mean(const std::vector<double>& values) {
+  return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+}
+
+struct ShapeColumns {
+  std::vector<double> solidity, roundness;
+};
+
+ShapeColumns columnsOf(const std::vector<RegionShape>& shapes) {
+  ShapeColumns c;
+  for (const RegionShape& s : shapes) {
+    c.solidity.push_back(s.solidity);
+    c.roundness.push_back(s.roundness);
+  }
+  return c;
+}
+
+SectionSummary summarize(const SectionStatistics& s, const ShapeColumns& columns, double diameter) {
+  SectionSummary out;
+  out.shapes = s.shapes.size();
+  out.solidity = mean(columns.solidity);
+  out.roundness = mean(columns.roundness);
+  out.windows = s.windowFractions.size();
+  out.windowSpread = standardDeviation(s.windowFractions);
+  out.neighbours = s.neighbourDistances.size();
+  out.neighbourDistance = mean(s.neighbourDistances) / diameter;
+  return out;
+}
+
+} // namespace
+
+SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid, double diameter) {
+  const ShapeColumns r = columnsOf(reference.shapes), s = columnsOf(solid.shapes);
+  SectionComparison c;
+  c.reference = summarize(reference, r, diameter);
+  c.solid = summarize(solid, s, diameter);
+  c.solidityKs = ksStatistic(r.solidity, s.solidity);
+  c.roundnessKs = ksStatistic(r.roundness, s.roundness);
+  c.windowSpreadRatio = c.reference.windowSpread > 0 ? c.solid.windowSpread / c.reference.windowSpread : 0;
+  c.neighbourKs = ksStatistic(reference.neighbourDistances, solid.neighbourDistances);
+  c.neighbourRatio = c.reference.neighbourDistance > 0 ? c.solid.neighbourDistance / c.reference.neighbourDistance : 0;
+  c.referenceSolidity = r.solidity;
+  c.solidSolidity = s.solidity;
+  return c;
+}
+
+cv::Mat photoLabels(const ExemplarStats& stats, double voxelsPerPixel) {
+  cv::Mat labels = cv::Mat::zeros(stats.imageHeight, stats.imageWidth, CV_32S);
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+    const Particle2D& p = stats.particles[i];
+    labels(p.box).setTo(cv::Scalar(int(i) + 1), p.mask);
+  }
+  const cv::Size size(std::max(1, int(std::lround(stats.imageWidth * voxelsPerPixel))),
+                      std::max(1, int(std::lround(stats.imageHeight * voxelsPerPixel))));
+  cv::Mat resampled;
+  cv::resize(labels, resampled, size, 0, 0, cv::INTER_NEAREST);
+  return resampled;
+}
+
+double meanParticleDiameter(const ExemplarStats& stats) {
+  double sum = 0;
+  const std::vector<std::size_t> counted = statisticalParticles(stats.particles);
+  for (std::size_t i : counted) sum += stats.particles[i].area;
+  return counted.empty() ? 0 : std::sqrt(4 / std::numbers::pi * sum / double(counted.size()));
+}
+
+} // namespace solidtex
