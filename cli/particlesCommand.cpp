@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "pipeline/jobSupport.h"
+#include "particles/fitHullSmoothing.h"
 #include "pipeline/particleSolidJob.h"
 
 namespace solidtex::cli {
@@ -15,6 +16,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto dims = std::make_shared<std::vector<int>>();
   auto placer = std::make_shared<std::string>("edt");
   auto sizing = std::make_shared<std::string>("sections");
+  auto arrangement = std::make_shared<std::string>("uniform");
   CLI::App* command = app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
@@ -26,7 +28,16 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--sizing", *sizing,
                       "sections: particle sizes whose random sections match the photo's areas; bbox: the paper's, from 2D boxes")
       ->capture_default_str();
+  command->add_option("--arrangement", *arrangement,
+                      "uniform: each particle at a random spot that holds it, scattered as in most photos; "
+                      "best-fit: the paper's, the tightest spot")
+      ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")->capture_default_str();
+  auto smoothing = std::make_shared<std::string>("auto");
+  command->add_option("--smoothing", *smoothing,
+                      "Rounding of the hulls' edges as a share of a particle's size, 0 (the paper's sharp hulls) "
+                      "to 0.5, or auto: as round as the photo's particles")
+      ->capture_default_str();
   command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused")
       ->capture_default_str()->check(CLI::Range(1, 4096));
   command->add_option("--seed", job->seed, "Random seed: same seed, same volume")->capture_default_str();
@@ -36,10 +47,12 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
-  return [job, size, dims, placer, sizing, threads] {
+  return [job, size, dims, placer, sizing, arrangement, smoothing, threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
     job->placer = parsePlacerKind(*placer);
     job->sizing = parseSizing(*sizing);
+    job->arrangement = parseArrangement(*arrangement);
+    job->smoothing = parseSmoothing(*smoothing);
     const ThreadLimit limit(*threads);
     const auto report = runParticleSolid(*job);
     const auto& volume = report["volume"];

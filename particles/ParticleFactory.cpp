@@ -32,6 +32,9 @@ void checkOptions(const ParticleOptions& options) {
   checkRange("views", options.views, 1, 16);
   checkRange("shapes", options.shapes, 1, 100000);
   checkRange("contourVertices", options.contourVertices, 3, 10000);
+  checkRange("smoothing resolution", options.smoothing.resolution, 8, 256);
+  if (!(options.smoothing.radius >= 0 && options.smoothing.radius <= 0.5))
+    throw InputError("particle smoothing must be in [0, 0.5], got " + std::to_string(options.smoothing.radius));
 }
 
 // Particles whose contours carve the hulls; those cut by the photo's border only when there is no other.
@@ -146,8 +149,27 @@ ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptio
     : stats_(stats), options_(options) {
   checkOptions(options);
   const std::vector<int> sources = contourSources(stats);
-  hulls_.resize(std::size_t(options.shapes));
-  tbb::parallel_for(0, options.shapes, [&](int i) { hulls_[std::size_t(i)] = buildHull(stats, sources, options, i); });
+  sharpHulls_.resize(std::size_t(options.shapes));
+  hulls_.resize(sharpHulls_.size());
+  tbb::parallel_for(0, options.shapes, [&](int i) {
+    sharpHulls_[std::size_t(i)] = buildHull(stats, sources, options, i);
+    hulls_[std::size_t(i)] = smoothHull(sharpHulls_[std::size_t(i)], options.smoothing);
+  });
+}
+
+ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
+                                 std::vector<HullMesh> sharpHulls)
+    : stats_(stats), options_(options), sharpHulls_(std::move(sharpHulls)), hulls_(sharpHulls_.size()) {
+  checkOptions(options);
+  tbb::parallel_for(std::size_t(0), hulls_.size(), [&](std::size_t i) { hulls_[i] = smoothHull(sharpHulls_[i], options.smoothing); });
+}
+
+ParticleFactory ParticleFactory::withSmoothing(const HullSmoothing& smoothing, int maxHulls) const {
+  ParticleOptions options = options_;
+  options.smoothing = smoothing;
+  const std::size_t count = maxHulls > 0 ? std::min(sharpHulls_.size(), std::size_t(maxHulls)) : sharpHulls_.size();
+  options.shapes = int(count);
+  return ParticleFactory(stats_, options, {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
 }
 
 ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {

@@ -6,6 +6,7 @@
 #include "common/Random.h"
 #include "particles/HullMesh.h"
 #include "particles/VoxelShape.h"
+#include "particles/smoothHull.h"
 #include "segmentation/ExemplarStats.h"
 
 namespace solidtex {
@@ -14,6 +15,7 @@ struct ParticleOptions {
   int views = 3;              ///< contours per visual hull (paper: 3 to 5)
   int shapes = 64;            ///< distinct hulls built up front and reused with fresh sizes and rotations
   int contourVertices = 48;   ///< contours are simplified to about this many vertices before the CGAL work
+  HullSmoothing smoothing;    ///< rounds the edges where the views' prisms meet
   std::uint64_t seed = 1;
 };
 
@@ -39,17 +41,26 @@ public:
   /// particle with the nearest box (|dw| + |dh|), random among equals.
   ParticleSize pickDepth(int width, int height, Rng& rng) const;
 
-  /// A particle whose tight box is (width, height, depth) voxels (each >= 1), from a random pool hull
-  /// under a random rotation, non-uniformly scaled to the box; one 6-connected piece. Thread-safe.
+  /// A particle from a random pool hull under a random rotation, non-uniformly scaled to the box
+  /// (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
+  /// which loses the face layers no voxel centre reached (see voxelize). Thread-safe.
   /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
   VoxelShape make(int width, int height, int depth, Rng& rng) const;
 
+  /// The same pool of hulls smoothed otherwise (from the sharp visual hulls), the first `maxHulls`
+  /// of them when positive; the CGAL work is not redone.
+  ParticleFactory withSmoothing(const HullSmoothing& smoothing, int maxHulls = 0) const;
+
   const std::vector<HullMesh>& hulls() const { return hulls_; }
+  const ParticleOptions& options() const { return options_; }
 
 private:
+  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options, std::vector<HullMesh> sharpHulls);
+
   const ExemplarStats& stats_;
   ParticleOptions options_;
-  std::vector<HullMesh> hulls_;
+  std::vector<HullMesh> sharpHulls_;  ///< the visual hulls (paper 3.4)
+  std::vector<HullMesh> hulls_;       ///< sharpHulls_ smoothed as the options say
 };
 
 } // namespace solidtex

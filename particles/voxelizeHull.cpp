@@ -207,52 +207,20 @@ std::array<Coord, 2> occupiedBox(const VoxelShape& shape) {
   return {lo, hi};
 }
 
-// The occupied voxel of layer `layer` on `axis` whose centre is nearest to `target` across the axis.
-Coord nearestInLayer(const VoxelShape& shape, std::size_t axis, int layer, const Eigen::Vector3d& target) {
-  const Coord size = sizeOf(shape.dims);
-  const std::size_t a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-  Coord c{}, best{};
-  c[axis] = layer;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (c[a2] = 0; c[a2] < size[a2]; ++c[a2])
-    for (c[a1] = 0; c[a1] < size[a1]; ++c[a1]) {
-      const double d1 = c[a1] + 0.5 - target[Eigen::Index(a1)], d2 = c[a2] + 0.5 - target[Eigen::Index(a2)];
-      if (isInside(shape, c) && d1 * d1 + d2 * d2 < bestDistance) {
-        bestDistance = d1 * d1 + d2 * d2;
-        best = c;
-      }
-    }
-  return best;
-}
-
-// No voxel centre reached the low or high face of `axis`: a one-voxel-wide spike from the nearest voxel
-// of the outermost occupied layer runs to it, towards the hull's extreme point on that face.
-void spikeToFace(VoxelShape& shape, const std::vector<Eigen::Vector3d>& points, std::size_t axis, bool high, int layer) {
-  const int face = high ? sizeOf(shape.dims)[axis] - 1 : 0;
-  if (layer == face) return;
-  const auto a = Eigen::Index(axis);
-  const auto extreme = std::min_element(points.begin(), points.end(), [&](const auto& p, const auto& q) {
-    return high ? p[a] > q[a] : p[a] < q[a];
-  });
-  Coord c = nearestInLayer(shape, axis, layer, *extreme);
-  for (const int step = high ? 1 : -1; c[axis] != face;) {
-    c[axis] += step;
-    shape.inside[shape.dims.index(c[0], c[1], c[2])] = 1;
-  }
-}
-
-// Makes the occupied box exactly the requested one. Spikes along one axis stay inside the occupied
-// range of the others, so the extents measured once remain valid.
-void reachBoxFaces(VoxelShape& shape, const std::vector<Eigen::Vector3d>& points) {
-  auto [lo, hi] = occupiedBox(shape);
+// The shape cut to its occupied box; one voxel when sampling caught none.
+void cropToOccupiedBox(VoxelShape& shape) {
+  const auto [lo, hi] = occupiedBox(shape);
   if (hi[0] < 0) {
-    lo = hi = {shape.dims.x / 2, shape.dims.y / 2, shape.dims.z / 2};
-    shape.inside[shape.dims.index(lo[0], lo[1], lo[2])] = 1;
+    shape = {{1, 1, 1}, {1}};
+    return;
   }
-  for (std::size_t axis = 0; axis < 3; ++axis) {
-    spikeToFace(shape, points, axis, false, lo[axis]);
-    spikeToFace(shape, points, axis, true, hi[axis]);
-  }
+  const Dims cropped{hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
+  if (cropped == shape.dims) return;
+  std::vector<std::uint8_t> inside(cropped.count());
+  for (int k = 0; k < cropped.z; ++k)
+    for (int j = 0; j < cropped.y; ++j)
+      std::copy_n(&shape.inside[shape.dims.index(lo[0], j + lo[1], k + lo[2])], cropped.x, &inside[cropped.index(0, j, k)]);
+  shape = {cropped, std::move(inside)};
 }
 
 } // namespace
@@ -270,7 +238,7 @@ VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w
     addCrossings(grid[std::size_t(a)], grid[std::size_t(b)], grid[std::size_t(c)], shape.dims, crossings);
   shape.inside = fillRows(crossings, shape.dims);
   keepLargestPiece(shape);
-  reachBoxFaces(shape, points);
+  cropToOccupiedBox(shape);
   return shape;
 }
 

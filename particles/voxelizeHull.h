@@ -12,9 +12,9 @@ inline constexpr int kMaxParticleSide = 8192;
 /// The hull turned by `rotation`, scaled per axis so that its tight box is exactly
 /// [0,w] x [0,h] x [0,d], as voxels: voxel (i,j,k) is inside when its centre (i+.5, j+.5, k+.5)
 /// is (winding number > 0, exact predicates on a 2^-16 voxel grid). The result is one
-/// 6-connected piece (the largest, when sampling splits thin parts off) whose tight box is exactly
-/// (w,h,d): a face of the box that no voxel centre reached gets a one-voxel-wide spike from the
-/// nearest voxel towards the hull's extreme point on that face. Thread-safe.
+/// 6-connected piece (the largest, when sampling splits thin parts off) in its tight box: (w,h,d)
+/// less the face layers that no voxel centre reached (a sharp tip or edge touching a face between
+/// centres), rather than a sliver grown to reach them. Thread-safe.
 /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide] or a flat or empty hull.
 VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d);
 

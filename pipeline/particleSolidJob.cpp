@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/Error.h"
+#include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
 #include "placement/placeLargestFirst.h"
 #include "segmentation/imageIO.h"
@@ -39,7 +40,7 @@ double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
 
 std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const ExemplarStats& stats,
                                               const PlacementResult& placement, double scale,
-                                              const SectionSizing& sizing) {
+                                              const SectionSizing& sizing, double smoothing) {
   char fraction[32], voxelsPerPixel[32];
   std::snprintf(fraction, sizeof fraction, "%.6f", placement.volumeFraction);
   std::snprintf(voxelsPerPixel, sizeof voxelsPerPixel, "%.9g", scale);
@@ -51,7 +52,9 @@ std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const
           {"voxels_per_pixel", voxelsPerPixel},
           {"placer", placerName(job.placer)},
           {"sizing", sizingName(job.sizing)},
-          {"size_factor", std::to_string(sizing.sizeFactor)}};
+          {"arrangement", arrangementName(job.arrangement)},
+          {"size_factor", std::to_string(sizing.sizeFactor)},
+          {"smoothing", std::to_string(smoothing)}};
 }
 
 nlohmann::json placementJson(const PlacementResult& placement, const ExemplarStats& stats, double scale) {
@@ -86,6 +89,25 @@ float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
   return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
 }
 
+// The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
+// particles at the sizes the solid will have (sized first with the sharp hulls).
+ParticleFactory makeFactory(const ParticleSolidJob& job, const ExemplarStats& stats, double scale,
+                            SmoothingFit& smoothing) {
+  ParticleOptions options = job.particles;
+  options.seed = job.seed;
+  options.smoothing.radius = job.smoothing.value_or(0);
+  ParticleFactory factory(stats, options);
+  if (job.smoothing) {
+    smoothing.radius = *job.smoothing;
+    return factory;
+  }
+  const double sizeFactor =
+      job.sizing == Sizing::Sections ? fitSectionSizing(stats, factory, scale, job.seed).sizeFactor : 1.0;
+  smoothing = fitHullSmoothing(stats, factory, scale, sizeFactor, job.seed);
+  options.smoothing.radius = smoothing.radius;
+  return factory.withSmoothing(options.smoothing);
+}
+
 nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   checkJob(job);
   PhaseTimer timer;
@@ -97,9 +119,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const double scale = voxelsPerPixel(job, stats);
 
   timer.start("particle_shapes");
-  ParticleOptions particleOptions = job.particles;
-  particleOptions.seed = job.seed;
-  const ParticleFactory factory(stats, particleOptions);
+  SmoothingFit smoothing;
+  const ParticleFactory factory = makeFactory(job, stats, scale, smoothing);
 
   timer.start("sizing");
   SectionSizing sizing{1, {}, stats.histogram.ratios, 0};
@@ -113,6 +134,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   placementOptions.dims = job.dims;
   placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
+  placementOptions.arrangement = job.arrangement;
   if (job.sizing == Sizing::Sections) {
     placementOptions.particleWeights = sizing.particleWeights;
     placementOptions.sizeFactor = sizing.sizeFactor;
@@ -129,7 +151,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
 
   timer.start("colour");
   SolidVolume volume = paintParticleSolid(stats, placement, scale, job.seed);
-  volume.metadata = metadataOf(job, stats, placement, scale, sizing);
+  volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   timer.start("write");
   nlohmann::json outputs = {{"vdb", job.output}};
@@ -141,12 +163,18 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"seed", job.seed},
                            {"placer", placerName(job.placer)},
                            {"sizing", sizingName(job.sizing)},
+                           {"arrangement", arrangementName(job.arrangement)},
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},
                            {"outputs", outputs}};
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
+  report["smoothing"] = {{"radius", smoothing.radius}, {"fitted", !job.smoothing.has_value()}};
+  if (!job.smoothing) {
+    report["smoothing"]["solidity_ks"] = smoothing.solidityKs;
+    report["smoothing"]["roundness_ks"] = smoothing.roundnessKs;
+  }
   if (job.sizing == Sizing::Sections) report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();

@@ -8,6 +8,7 @@
 #include "common/Grid.h"
 #include "particles/ParticleFactory.h"
 #include "placement/SpaciousnessField.h"
+#include "placement/placeLargestFirst.h"
 #include "placement/sectionSizing.h"
 #include "segmentation/analyzeExemplar.h"
 
@@ -22,7 +23,9 @@ struct ParticleSolidJob {
   double voxelsPerPixel = 0;            ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
   PlacerKind placer = PlacerKind::Edt;
   Sizing sizing = Sizing::Sections;
-  ParticleOptions particles;            ///< its seed is replaced by `seed`
+  Arrangement arrangement = Arrangement::Uniform;
+  ParticleOptions particles;            ///< its seed is replaced by `seed`, its smoothing by `smoothing`
+  std::optional<double> smoothing;      ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;
   std::optional<std::string> report;
   std::optional<std::string> preview;   ///< folder for PNGs

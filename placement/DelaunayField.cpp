@@ -26,6 +26,7 @@
 
 #include "placement/detail/VoxelBits.h"
 #include "placement/detail/fieldFactories.h"
+#include "placement/detail/uniformSample.h"
 #include "placement/detail/voxelSets.h"
 
 namespace solidtex::detail {
@@ -182,6 +183,18 @@ public:
       if (int(spots.size()) >= maxCount) break;
     }
     for (const Voxel& v : spots) spotSeen_.clearWordOf(dims_.index(v));  // all clear again
+    return spots;
+  }
+
+  std::vector<Voxel> randomFit(float radius, int maxCount, Rng& rng) override {
+    std::vector<Voxel> spots;
+    const double first = std::max(1.0, std::ceil(double(radius) * kSteps));
+    if (first > double(capKey_) || maxCount <= 0) return spots;
+    sampleUniformly(buckets_, std::size_t(first), std::size_t(maxCount), rng, [&](const Entry& entry) {
+      if (isOccupied(entry.spot)) return false;
+      spots.push_back(dims_.voxel(entry.spot));
+      return true;
+    });
     return spots;
   }
 

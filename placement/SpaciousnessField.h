@@ -37,6 +37,9 @@ public:
   /// value first (best fit), equal values in an order drawn from rng. A spot's spaciousness is at
   /// least its value less slack().
   virtual std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) = 0;
+  /// Up to maxCount free candidate spots drawn uniformly (with replacement) among those valued at
+  /// least `radius`, in the order drawn: a random spot that may hold a particle, not the tightest.
+  virtual std::vector<Voxel> randomFit(float radius, int maxCount, Rng& rng) = 0;
   /// How far bestFit's values may exceed the spaciousness: 0 for the grid fields; 1 voxel for the
   /// Delaunay field, whose triangulation holds a sample of the particles' surface voxels.
   virtual float slack() const { return 0; }

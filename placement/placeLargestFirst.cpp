@@ -346,32 +346,37 @@ private:
     return shape;
   }
 
-  // Best fit (paper 3.7): the smallest spots that may hold the shape first, checked voxel by voxel.
+  // Uniform: random spots that may hold the shape first. Best fit (paper 3.7), and uniform once its
+  // random spots are spent: the smallest spots that may hold the shape first. Checked voxel by voxel.
   bool place(const detail::FitShape& shape, const ParticleSize& size, int bin) {
     fieldUpdate_.wait();
     const float cap = field_.maxRadius();
     triedSpots_.clear();
-    const auto forgetTried = [&] {
-      for (const Voxel& spot : triedSpots_) tried_.clearWordOf(options_.dims.index(spot));
-    };
-    for (int step = 0; step < kRadiusSteps; ++step) {
+    std::optional<Voxel> found;
+    if (options_.arrangement == Arrangement::Uniform)
+      found = firstFit(shape, field_.randomFit(std::min(cap, shape.innerRadius), options_.candidatesPerTry, rng_),
+                       std::min(cap, shape.innerRadius));
+    for (int step = 0; step < kRadiusSteps && !found; ++step) {
       const float t = float(step) / float(kRadiusSteps - 1);
       const float radius = std::min(cap, shape.innerRadius + t * (shape.outerRadius - shape.innerRadius));
       const std::vector<Voxel> spots = field_.bestFit(radius, options_.candidatesPerTry, rng_);
       if (spots.empty()) break;  // nothing this spacious, so nothing more spacious either
-      for (const Voxel& spot : spots) {
-        if (tried_.testAndSet(options_.dims.index(spot))) continue;
-        triedSpots_.push_back(spot);
-        // bestFit's spots hold at least `radius` less the slack: a free bound, where at() may be a costly query.
-        if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims)) {
-          forgetTried();
-          commit(shape, spot, size, bin);
-          return true;
-        }
-      }
+      found = firstFit(shape, spots, radius);
     }
-    forgetTried();
-    return false;
+    for (const Voxel& spot : triedSpots_) tried_.clearWordOf(options_.dims.index(spot));
+    if (found) commit(shape, *found, size, bin);
+    return found.has_value();
+  }
+
+  // The first of the spots, each valued at least `radius` by the field, where the shape fits.
+  std::optional<Voxel> firstFit(const detail::FitShape& shape, const std::vector<Voxel>& spots, float radius) {
+    for (const Voxel& spot : spots) {
+      if (tried_.testAndSet(options_.dims.index(spot))) continue;
+      triedSpots_.push_back(spot);
+      // The field's spots hold at least `radius` less the slack: a free bound, where at() may be a costly query.
+      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims)) return spot;
+    }
+    return std::nullopt;
   }
 
   void commit(const detail::FitShape& shape, const Voxel& spot, const ParticleSize& size, int bin) {
@@ -442,6 +447,16 @@ private:
 };
 
 } // namespace
+
+Arrangement parseArrangement(const std::string& name) {
+  if (name == "best-fit") return Arrangement::BestFit;
+  if (name == "uniform") return Arrangement::Uniform;
+  throw InputError("unknown arrangement '" + name + "': use best-fit or uniform");
+}
+
+const char* arrangementName(Arrangement arrangement) {
+  return arrangement == Arrangement::BestFit ? "best-fit" : "uniform";
+}
 
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
                                   SpaciousnessField& field, const PlacementOptions& options) {

@@ -12,11 +12,22 @@
 
 namespace solidtex {
 
+/// Where each particle goes among the spots that hold it.
+enum class Arrangement {
+  BestFit,  ///< the tightest spot (paper 3.7): particles pack into clusters and leave open regions
+  Uniform,  ///< a random spot, as random sequential addition scatters particles; best fit once none is found
+};
+
+/// "best-fit" | "uniform"; throws InputError otherwise.
+Arrangement parseArrangement(const std::string& name);
+const char* arrangementName(Arrangement arrangement);
+
 struct PlacementOptions {
   Dims dims{128, 128, 128};
   double voxelsPerPixel = 1;      ///< photo pixels to voxels
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
+  Arrangement arrangement = Arrangement::Uniform;
   int maxParticles = 0;           ///< stop after this many particles; 0: no limit
   /// Each photo particle's share of the 3D particles (per ExemplarStats::particles index); empty: the
   /// photo's frequencies (the paper's rule). When no bin of these shares fits any more before the

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/resampleRegions.h"
 #include "validation/arrangement.h"
 
 namespace solidtex {
@@ -63,11 +64,7 @@ cv::Mat photoLabels(const ExemplarStats& stats, double voxelsPerPixel) {
     const Particle2D& p = stats.particles[i];
     labels(p.box).setTo(cv::Scalar(int(i) + 1), p.mask);
   }
-  const cv::Size size(std::max(1, int(std::lround(stats.imageWidth * voxelsPerPixel))),
-                      std::max(1, int(std::lround(stats.imageHeight * voxelsPerPixel))));
-  cv::Mat resampled;
-  cv::resize(labels, resampled, size, 0, 0, cv::INTER_NEAREST);
-  return resampled;
+  return resampleLabels(labels, voxelsPerPixel);
 }
 
 double meanParticleDiameter(const ExemplarStats& stats) {

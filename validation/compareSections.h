@@ -38,7 +38,7 @@ struct SectionComparison {
 SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid, double diameter);
 
 /// The photo's particles as a label image (CV_32S, 1..P) resampled by `voxelsPerPixel` to a solid's
-/// voxels (nearest neighbour), so their shapes are measured at the resolution the solid can show.
+/// voxels (resampleLabels), so their shapes are measured at the resolution the solid can show.
 cv::Mat photoLabels(const ExemplarStats& stats, double voxelsPerPixel);
 
 /// Equivalent-disc diameter of the photo's mean statistical particle, in photo pixels.

@@ -7,6 +7,7 @@
 
 #include "common/Random.h"
 #include "common/randomDirection.h"
+#include "segmentation/resampleRegions.h"
 #include "validation/arrangement.h"
 #include "voxel/slice.h"
 
@@ -76,8 +77,8 @@ SectionStatistics measureImage(const cv::Mat& labels, bool axisAligned, const Se
     const double area = double(region.pixels.size());
     if (area < options.minArea) return;
     if (!region.cut) out.areas.push_back(area);
+    if (!axisAligned) return;  // an oblique sampling grid adds jagged edges that no photo has
     if (!region.cut && area >= options.shapeMinArea) out.shapes.push_back(measureRegion(region.pixels));
-    if (!axisAligned) return;
     cv::Point2d sum(0, 0);
     for (const cv::Point& p : region.pixels) sum += cv::Point2d(p);
     centres.push_back(sum / area);
@@ -113,12 +114,16 @@ SlicePlane steppedAxisPlane(const Dims& dims, int axis, int index, double step) 
   return plane;
 }
 
+// Axis plane i of the 3 x offsetsPerAxis, sampled `step` voxels apart.
+SlicePlane axisPlaneNumber(const Dims& dims, const SectionOptions& options, int i, double step) {
+  const int extent[3] = {dims.x, dims.y, dims.z};
+  const int axis = i / options.offsetsPerAxis, offset = i % options.offsetsPerAxis;
+  return steppedAxisPlane(dims, axis, int((offset + 0.5) * extent[axis] / options.offsetsPerAxis), step);
+}
+
 std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& options) {
   std::vector<SlicePlane> planes;
-  const int extent[3] = {dims.x, dims.y, dims.z};
-  for (int axis = 0; axis < 3; ++axis)
-    for (int i = 0; i < options.offsetsPerAxis; ++i)
-      planes.push_back(steppedAxisPlane(dims, axis, int((i + 0.5) * extent[axis] / options.offsetsPerAxis), options.step));
+  for (int i = 0; i < 3 * options.offsetsPerAxis; ++i) planes.push_back(axisPlaneNumber(dims, options, i, options.step));
   Rng rng(deriveSeed(options.seed, 0x5EC7));
   const Eigen::Vector3d centre((dims.x - 1) * 0.5, (dims.y - 1) * 0.5, (dims.z - 1) * 0.5);
   const double spread = 0.25 * std::min({dims.x, dims.y, dims.z});
@@ -139,10 +144,17 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
   std::vector<SectionStatistics> perPlane(planes.size());
   std::vector<std::size_t> pixels(planes.size());
   tbb::parallel_for(std::size_t(0), planes.size(), [&](std::size_t i) {
-    const SlicePlane& plane = planes[i];
+    const bool axisAligned = i < axisPlanes;
+    SlicePlane plane = planes[i];
+    // Axis planes of a finer volume are cut at its own resolution and resampled by area, as a
+    // camera at the coarser one would see them: nearest-voxel steps would give jagged edges.
+    const bool resample = axisAligned && options.step != 1;
+    if (resample) plane = axisPlaneNumber(dims, options, int(i), 1);
     std::vector<std::int32_t> image = slice(dims, ids, plane, kOutside);
-    pixels[i] = std::size_t(std::count_if(image.begin(), image.end(), [](std::int32_t id) { return id != kOutside; }));
-    perPlane[i] = measureImage(cv::Mat(plane.height, plane.width, CV_32S, image.data()), i < axisPlanes, options);
+    cv::Mat labels(plane.height, plane.width, CV_32S, image.data());
+    if (resample) labels = resampleLabels(labels, 1 / options.step);
+    pixels[i] = labels.total() - std::size_t(cv::countNonZero(labels == kOutside));
+    perPlane[i] = measureImage(labels, axisAligned, options);
   });
   SectionStatistics stats;
   double particlePixels = 0, allPixels = 0;
@@ -164,38 +176,6 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
 SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions& options) {
   CV_Assert(labels.type() == CV_32S);
   return measureImage(labels, true, options);
-}
-
-double ksStatistic(std::vector<double> a, std::vector<double> b) {
-  if (a.empty() || b.empty()) return 1;
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  std::size_t i = 0, j = 0;
-  double gap = 0;
-  while (i < a.size() && j < b.size()) {
-    const double x = std::min(a[i], b[j]);
-    while (i < a.size() && a[i] <= x) ++i;
-    while (j < b.size() && b[j] <= x) ++j;
-    gap = std::max(gap, std::abs(double(i) / double(a.size()) - double(j) / double(b.size())));
-  }
-  return gap;
-}
-
-double wasserstein1(std::vector<double> a, std::vector<double> b) {
-  if (a.empty() || b.empty()) return 0;
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  // Integrate |F_a - F_b| over the merged breakpoints.
-  std::size_t i = 0, j = 0;
-  double x = std::min(a.front(), b.front()), distance = 0;
-  while (i < a.size() || j < b.size()) {
-    const double next = j >= b.size() || (i < a.size() && a[i] <= b[j]) ? a[i] : b[j];
-    distance += std::abs(double(i) / double(a.size()) - double(j) / double(b.size())) * (next - x);
-    x = next;
-    while (i < a.size() && a[i] <= x) ++i;
-    while (j < b.size() && b[j] <= x) ++j;
-  }
-  return distance;
 }
 
 } // namespace solidtex

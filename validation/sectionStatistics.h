@@ -8,7 +8,8 @@
 #include <opencv2/core.hpp>
 
 #include "common/Grid.h"
-#include "validation/regionShape.h"
+#include "common/distributionDistance.h"
+#include "segmentation/regionShape.h"
 
 namespace solidtex {
 
@@ -27,7 +28,7 @@ struct SectionOptions {
 /// positions are in samples (`SectionOptions::step` voxels apart).
 struct SectionStatistics {
   std::vector<double> areas;               ///< one per cross-section not cut by the walls, at least minArea
-  std::vector<RegionShape> shapes;         ///< the uncut sections of at least shapeMinArea
+  std::vector<RegionShape> shapes;         ///< axis planes only: the uncut sections of at least shapeMinArea
   std::vector<double> windowFractions;     ///< axis planes only: their windows lie wholly in the volume
   std::vector<double> neighbourDistances;  ///< axis planes only: centroid to nearest centroid
   double areaFraction = 0;                 ///< particle pixels / all pixels over every plane
@@ -45,11 +46,5 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
 /// The same measures of one label image (CV_32S, 0 background, regions of equal positive labels),
 /// such as a photo's particles resampled to a solid's voxels: it counts as one axis plane.
 SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions& options);
-
-/// Two-sample Kolmogorov-Smirnov statistic: the largest gap between the empirical CDFs.
-double ksStatistic(std::vector<double> a, std::vector<double> b);
-
-/// Wasserstein-1 (earth mover's) distance between two empirical distributions on the line.
-double wasserstein1(std::vector<double> a, std::vector<double> b);
 
 } // namespace solidtex

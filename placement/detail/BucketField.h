@@ -39,6 +39,15 @@ public:
     return spots;
   }
 
+  std::vector<Voxel> randomFit(float radius, int maxCount, Rng& rng) override {
+    const auto first = std::lower_bound(values_.begin() + 1, values_.end(), radius);
+    std::vector<Voxel> spots;
+    if (first == values_.end() || maxCount <= 0) return spots;
+    queue_.sampleUniformly(std::size_t(first - values_.begin()), std::size_t(maxCount), rng,
+                           [&](VoxelIndex v) { spots.push_back(dims_.voxel(v)); });
+    return spots;
+  }
+
   std::size_t bytes() const { return queue_.bytes() + values_.capacity() * sizeof(float); }
 
 protected:

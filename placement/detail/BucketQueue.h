@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/Random.h"
+#include "placement/detail/uniformSample.h"
 #include "placement/detail/voxelSets.h"
 
 namespace solidtex::detail {
@@ -66,6 +67,16 @@ public:
         out.push_back(bucket[taken++]);
       }
     }
+  }
+
+  /// Hands up to maxCount voxels with keys >= minKey, drawn uniformly with replacement, to `take`.
+  template <class Take>
+  void sampleUniformly(std::size_t minKey, std::size_t maxCount, Rng& rng, Take&& take) const {
+    solidtex::detail::sampleUniformly(buckets_, std::max<std::size_t>(minKey, 1), maxCount, rng, [&](VoxelIndex v) {
+      if (keys_[v] == 0 || keys_[v] < minKey) return false;  // stale: lowered since
+      take(v);
+      return true;
+    });
   }
 
   /// Heap bytes held (keys and buckets), for memory reports.

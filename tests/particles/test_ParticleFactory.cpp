@@ -73,7 +73,7 @@ TEST(ParticleFactory, PoolIsTheSameAtAnyThreadCount) {
   EXPECT_NE(one[0].vertices, otherSeed[0].vertices);
 }
 
-TEST(ParticleFactory, MakesTheRequestedBoxInOnePiece) {
+TEST(ParticleFactory, MakesAboutTheRequestedBoxInOnePiece) {
   const ExemplarStats stats = test::gravelStats(30, 5);
   const ParticleFactory factory(stats, {.shapes = 8});
   Rng rng(9);
@@ -81,7 +81,11 @@ TEST(ParticleFactory, MakesTheRequestedBoxInOnePiece) {
     const ParticleSize size = factory.pickDepth(stats.sizePairs[i % stats.sizePairs.size()].width,
                                                 stats.sizePairs[i % stats.sizePairs.size()].height, rng);
     const VoxelShape shape = factory.make(size.width, size.height, size.depth, rng);
-    ASSERT_EQ(shape.dims, (Dims{size.width, size.height, size.depth}));
+    const int asked[3] = {size.width, size.height, size.depth}, sides[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LE(sides[a], asked[a]);
+      EXPECT_GE(sides[a], std::max(1, int(0.85 * asked[a]) - 1));  // see Voxelize.EveryBoxIsTight...
+    }
     EXPECT_TRUE(test::tightInBox(shape));
     EXPECT_EQ(test::firstPieceSize(shape), shape.voxelCount());
     EXPECT_EQ(stats.particles[std::size_t(size.source)].box.size(), cv::Size(size.width, size.height));

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -21,9 +22,10 @@ struct TruthCase {
 
 class ReconstructionOfATruth : public testing::TestWithParam<TruthCase> {};
 
-// A photo cut from a known 3D truth, rebuilt at 128^3 with both sizings: section sizing must match the
-// photo's section areas and the truth's particle volumes, and beat the paper's box sizing on both.
-TEST_P(ReconstructionOfATruth, SectionSizingMatchesThePhotoAndTheTruth) {
+// A photo cut from a known 3D truth, rebuilt at 128^3 by default and as the paper does (box sizing,
+// best fit, sharp hulls): the default must match the photo's section areas and the truth's particle
+// volumes, and beat the paper on sizes, section shapes and arrangement.
+TEST_P(ReconstructionOfATruth, DefaultsMatchThePhotoAndTheTruthBetterThanThePaper) {
   const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / GetParam().name;
   fs::remove_all(dir);
   TruthJob truth;
@@ -32,28 +34,38 @@ TEST_P(ReconstructionOfATruth, SectionSizingMatchesThePhotoAndTheTruth) {
   truth.truth.seed = GetParam().seed;
   runTruth(truth);
 
-  std::map<Sizing, nlohmann::json> comparison;
-  for (const Sizing sizing : {Sizing::Bbox, Sizing::Sections}) {
+  std::map<bool, nlohmann::json> comparison;
+  for (const bool paper : {true, false}) {
     ParticleSolidJob job;
     job.photo = (dir / "photo.png").string();
-    job.output = (dir / (std::string(sizingName(sizing)) + ".vdb")).string();
-    job.sizing = sizing;
+    job.output = (dir / (paper ? "paper.vdb" : "default.vdb")).string();
+    if (paper) {
+      job.sizing = Sizing::Bbox;
+      job.arrangement = Arrangement::BestFit;
+      job.smoothing = 0;
+    }
     job.progress = false;
     runParticleSolid(job);
     CompareJob compare;
     compare.photo = job.photo;
     compare.volume = job.output;
     compare.truth = (dir / "truth.vdb").string();
-    comparison[sizing] = runCompare(compare);
+    comparison[paper] = runCompare(compare);
   }
-  const nlohmann::json& sections = comparison[Sizing::Sections];
-  const nlohmann::json& bbox = comparison[Sizing::Bbox];
+  const nlohmann::json& sections = comparison[false];
+  const nlohmann::json& bbox = comparison[true];
   EXPECT_NEAR(sections["volume_fraction"].get<double>(), sections["area_fraction"].get<double>(), 0.02);
   EXPECT_LE(sections["ks"].get<double>(), 0.12);
   EXPECT_LE(sections["truth"]["volume_wasserstein1_over_mean"].get<double>(), 0.3);
   EXPECT_LT(sections["ks"].get<double>(), bbox["ks"].get<double>());
   EXPECT_LT(sections["truth"]["volume_wasserstein1_over_mean"].get<double>(),
             bbox["truth"]["volume_wasserstein1_over_mean"].get<double>());
+  for (const char* measure : {"solidity_ks", "roundness_ks"})
+    EXPECT_LT(sections["truth"][measure].get<double>(), bbox["truth"][measure].get<double>()) << measure;
+  const auto clustering = [](const nlohmann::json& c) {
+    return std::abs(std::log(c["truth"]["window_spread_ratio"].get<double>()));
+  };
+  EXPECT_LT(clustering(sections), clustering(bbox));
   fs::remove_all(dir);
 }
 

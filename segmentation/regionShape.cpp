@@ -1,8 +1,7 @@
-#include "validation/regionShape.h"
+#include "segmentation/regionShape.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include <opencv2/imgproc.hpp>
@@ -30,26 +29,6 @@ double croftonPerimeter(const cv::Mat& framedMask) {
   return std::numbers::pi / 8 * (axis + diagonal / std::numbers::sqrt2);
 }
 
-// Pixels whose centres lie in a convex polygon with integer vertices, row by row: the digital convex
-// hull, which a digital disc or ellipse fills exactly.
-double pixelsInConvexPolygon(const std::vector<cv::Point>& hull) {
-  const auto [low, high] = std::minmax_element(hull.begin(), hull.end(), [](cv::Point a, cv::Point b) { return a.y < b.y; });
-  double count = 0;
-  for (int y = low->y; y <= high->y; ++y) {
-    double left = std::numeric_limits<double>::infinity(), right = -left;
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-      const cv::Point p = hull[i], q = hull[(i + 1) % hull.size()];
-      if (y < std::min(p.y, q.y) || y > std::max(p.y, q.y)) continue;
-      const double x = p.y == q.y ? p.x : p.x + double(y - p.y) * (q.x - p.x) / double(q.y - p.y);
-      const double other = p.y == q.y ? q.x : x;
-      left = std::min({left, x, other});
-      right = std::max({right, x, other});
-    }
-    if (right >= left) count += std::floor(right + 1e-9) - std::ceil(left - 1e-9) + 1;
-  }
-  return count;
-}
-
 } // namespace
 
 RegionShape measureRegion(const std::vector<cv::Point>& pixels) {
@@ -69,9 +48,14 @@ RegionShape measureRegion(const std::vector<cv::Point>& pixels) {
   shape.perimeter = croftonPerimeter(mask);
   shape.roundness = 4 * std::numbers::pi * shape.area / (shape.perimeter * shape.perimeter);
 
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  const auto outer = std::max_element(contours.begin(), contours.end(),
+                                      [](const auto& a, const auto& b) { return a.size() < b.size(); });
   std::vector<cv::Point> hull;
-  cv::convexHull(pixels, hull);
-  shape.solidity = std::min(1.0, shape.area / std::max(1.0, pixelsInConvexPolygon(hull)));
+  cv::convexHull(*outer, hull);
+  const double hullArea = cv::contourArea(hull);
+  shape.solidity = hullArea > 0 ? std::min(1.0, cv::contourArea(*outer) / hullArea) : 1.0;
   return shape;
 }
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "common/Random.h"
-#include "validation/regionShape.h"
+#include "segmentation/regionShape.h"
 
 namespace solidtex {
 namespace {
@@ -53,7 +53,7 @@ TEST(RegionShape, DigitalDiscsAreConvexAndRound) {
     EXPECT_NEAR(m.area / (std::numbers::pi * r * r), 1, 0.02) << r;
     EXPECT_NEAR(m.perimeter / (2 * std::numbers::pi * r), 1, 0.03) << r;
     EXPECT_NEAR(m.roundness, 1, 0.05) << r;
-    EXPECT_EQ(m.solidity, 1) << r;  // the pixels whose centres lie in a convex set are its digital hull
+    EXPECT_GE(m.solidity, 0.95) << r;  // the contour's staircase dents a digital disc a little
   }
   const RegionShape centred = measureRegion(digitalEllipse(6, 6, 0));
   EXPECT_NEAR(centred.centroid.x, 100, 1e-9);
@@ -66,13 +66,13 @@ TEST(RegionShape, DigitalEllipsesMatchTheirAnalyticRoundness) {
     const double p = ramanujanPerimeter(a, b);
     EXPECT_NEAR(m.perimeter / p, 1, 0.03) << a << ' ' << b;
     EXPECT_NEAR(m.roundness, 4 * std::numbers::pi * std::numbers::pi * a * b / (p * p), 0.05) << a << ' ' << b;
-    EXPECT_EQ(m.solidity, 1) << a << ' ' << b;
+    EXPECT_GE(m.solidity, 0.95) << a << ' ' << b;
   }
 }
 
-// An L of two 10 x 30 bars: 500 pixels. The hull of the pixel centres, (0,0) (9,0) (29,20) (29,29)
-// (0,29), has area 29^2 - 20^2 / 2 = 641 and 96 lattice points on its boundary, so by Pick's theorem
-// 641 + 96 / 2 + 1 = 690 pixel centres in it.
+// An L of two 10 x 30 bars: its contour through the boundary pixels' centres encloses 29^2 - 20^2 =
+// 441 (plus half a pixel where the 8-connected contour cuts the inner corner), its convex hull (0,0)
+// (9,0) (29,20) (29,29) (0,29) 29^2 - 20^2 / 2 = 641.
 TEST(RegionShape, ConcaveRegionsHaveLowSolidity) {
   std::vector<cv::Point> pixels;
   for (int y = 0; y < 30; ++y)
@@ -80,7 +80,7 @@ TEST(RegionShape, ConcaveRegionsHaveLowSolidity) {
       if (x < 10 || y >= 20) pixels.push_back({x, y});
   const RegionShape s = measureRegion(pixels);
   EXPECT_EQ(s.area, 500);
-  EXPECT_DOUBLE_EQ(s.solidity, 500.0 / 690.0);
+  EXPECT_NEAR(s.solidity, 441.5 / 641.0, 1e-9);
   EXPECT_LT(s.roundness, 0.6);
 }
 

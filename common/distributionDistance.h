@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// Distances between two empirical distributions on the line.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace solidtex {
+
+/// Two-sample Kolmogorov-Smirnov statistic: the largest gap between the empirical CDFs; 1 when
+/// either sample is empty.
+inline double ksStatistic(std::vector<double> a, std::vector<double> b) {
+  if (a.empty() || b.empty()) return 1;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  std::size_t i = 0, j = 0;
+  double gap = 0;
+  while (i < a.size() && j < b.size()) {
+    const double x = std::min(a[i], b[j]);
+    while (i < a.size() && a[i] <= x) ++i;
+    while (j < b.size() && b[j] <= x) ++j;
+    gap = std::max(gap, std::abs(double(i) / double(a.size()) - double(j) / double(b.size())));
+  }
+  return gap;
+}
+
+/// Wasserstein-1 (earth mover's) distance; 0 when either sample is empty.
+inline double wasserstein1(std::vector<double> a, std::vector<double> b) {
+  if (a.empty() || b.empty()) return 0;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  // Integrate |F_a - F_b| over the merged breakpoints.
+  std::size_t i = 0, j = 0;
+  double x = std::min(a.front(), b.front()), distance = 0;
+  while (i < a.size() || j < b.size()) {
+    const double next = j >= b.size() || (i < a.size() && a[i] <= b[j]) ? a[i] : b[j];
+    distance += std::abs(double(i) / double(a.size()) - double(j) / double(b.size())) * (next - x);
+    x = next;
+    while (i < a.size() && a[i] <= x) ++i;
+    while (j < b.size() && b[j] <= x) ++j;
+  }
+  return distance;
+}
+
+} // namespace solidtex

@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// Rounding a visual hull's sharp edges, where the prisms of its views meet.
+
+#include "particles/HullMesh.h"
+
+namespace solidtex {
+
+/// How far a hull is rounded.
+struct HullSmoothing {
+  double radius = 0.12;  ///< Gaussian sigma as a share of the hull's largest side; 0: none (the paper's sharp hulls)
+  int resolution = 40;   ///< voxels across the hull's largest side while it is filtered
+};
+
+/// The hull voxelized, its inside indicator Gaussian-filtered (OpenVDB Filter) and meshed again at
+/// one half (volumeToMesh): edges and corners rounded over about `radius`, flat and gently curved
+/// parts kept. Closed and outward oriented, in the hull's own coordinates. Returns the hull itself
+/// when the radius is under one filter voxel.
+HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing);
+
+} // namespace solidtex
