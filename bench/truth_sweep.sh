@@ -27,7 +27,7 @@ truths=(
   "flattened 0.5|--flatten 0.5"
   "flattened 0.45 spheres|--elongation 1 --flatten 0.45"
   "superellipsoid p4|--shape superellipsoid"
-  "superellipsoid p6 flat 0.6|--shape superellipsoid --exponent 6 --flatten 0.6"
+  "superellipsoid p6 flat 0.6|--shape superellipsoid --exponent 6 --flatten 0.6 --large-radius 11"
   "polytope|--shape polytope --elongation 1"
   "polytope elongated|--shape polytope --large-radius 11"
   "polytope flat 0.6, 0.3|--shape polytope --elongation 1 --flatten 0.6 --fraction 0.3"
