@@ -33,7 +33,8 @@ struct Particle {
   double volume() const { return kUnitSphereVolume * semiAxes.prod(); }
 };
 
-// Centred log stretches, then the smallest axis flattened against the other two, volume kept.
+// Centred log stretches, then the smallest axis flattened against the other two: it times
+// flatten^(2/3), they times flatten^(-1/3), so their ratio changes by flatten and the volume not.
 Eigen::Vector3d axisStretches(const ParticleTruthOptions& options, Rng& rng) {
   Eigen::Vector3d logs;
   for (int a = 0; a < 3; ++a) logs[a] = (2 * uniform01(rng) - 1) * std::log(options.elongation);
