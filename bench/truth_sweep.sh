@@ -1,34 +1,114 @@
 #!/usr/bin/env bash
-# Section sizing against the paper's box sizing on photos cut from known 3D truths (`solidtex truth`):
-# section-area KS against the photo and particle-volume W1/mean against the truth, as a Markdown table.
+# The reconstruction's default options against the paper's baseline on photos cut from a family of
+# known 3D truths (`solidtex truth`: shapes, size mixes, fractions, particle counts, photo blur and
+# noise): section-area KS against the photo and particle-volume W1/mean against the truth, as a
+# Markdown table.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
+# Environment: BASELINE_FLAGS  particles options of the baseline (default "--sizing bbox")
+#              JOBS            truths made and rebuilt at once (default 1)
+#              SOLIDTEX_BIN    the solidtex binary (default ./build/cli/solidtex)
 set -euo pipefail
 size=${1:-128}
 shift || true
 seeds=("$@")
 [ ${#seeds[@]} -eq 0 ] && seeds=(1 2)
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
+read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox}"
+jobs=${JOBS:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-truths=("default|" "spheres|--elongation 1" "elongated|--elongation 1.5" "crowded|--fraction 0.3"
-        "half large|--large-share 0.5 --spread 0.3" "wide sizes|--small-radius 5 --large-radius 16")
-echo "| truth | seed | photo particles | sections KS | sections volume W1/mean | bbox KS | bbox volume W1/mean | volume fraction (sections) | photo fraction |"
-echo "|---|---|---|---|---|---|---|---|---|"
+
+# name|truth options. The photo is the X x Y section: 320 x 320 holds about 80 particles of the
+# default sizes, 800 x 800 about 500. At a depth of 72 the longest particle must fit.
+truths=(
+  "default|"
+  "spheres|--elongation 1"
+  "prolate 1.5|--elongation 1.5"
+  "flattened 0.5|--flatten 0.5"
+  "flattened 0.45 spheres|--elongation 1 --flatten 0.45"
+  "superellipsoid p4|--shape superellipsoid"
+  "superellipsoid p6 flat 0.6|--shape superellipsoid --exponent 6 --flatten 0.6 --large-radius 11"
+  "polytope|--shape polytope --elongation 1"
+  "polytope elongated|--shape polytope --large-radius 11"
+  "polytope flat 0.6, 0.3|--shape polytope --elongation 1 --flatten 0.6 --fraction 0.3"
+  "unimodal|--large-share 0"
+  "unimodal spheres r9|--large-share 0 --elongation 1 --small-radius 9"
+  "unimodal superellipsoid r10|--shape superellipsoid --large-share 0 --small-radius 10"
+  "10:1 volume|--small-radius 5 --large-radius 10.8"
+  "10:1 volume, half large|--small-radius 5 --large-radius 10.8 --large-share 0.5"
+  "10:1 polytope|--shape polytope --small-radius 5 --large-radius 10.8"
+  "fraction 0.1|--fraction 0.1"
+  "fraction 0.3|--fraction 0.3"
+  "fraction 0.4|--fraction 0.4"
+  "fraction 0.4 10:1|--fraction 0.4 --small-radius 5 --large-radius 10.8"
+  "few: 320x320|--dims 320 320 72"
+  "few, fraction 0.1|--dims 448 448 72 --fraction 0.1"
+  "many: 800x800|--dims 800 800 72"
+  "many small|--dims 560 560 72 --small-radius 5 --large-radius 9"
+  "noise 0.06|--noise 0.06"
+  "blur 1|--blur 1"
+  "blur 2, noise 0.05|--blur 2 --noise 0.05"
+)
+
+# One truth and seed: the truth, both reconstructions and their comparisons, then one table row
+# (or one saying which step failed, so one refused setting does not end the sweep).
+run_one() {
+  local name=$1 seed=$2 dir=$3
+  shift 3
+  mkdir -p "$dir"
+  if ! measure_one "$seed" "$dir" "$@" 2> "$dir/error"; then
+    echo "| $name | $seed | failed: $(tail -n 1 "$dir/error") |"
+  else
+    python3 - "$dir" "$name" "$seed" <<'PY'
+import json, sys
+d, b = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "baseline"))
+def extra(r, section, key):
+    value = r.get(section, {}).get(key)
+    return "-" if value is None else f"{value:.3f}"
+def cells(r):
+    return [f"{r['ks']:.3f}", f"{r['truth']['volume_wasserstein1_over_mean']:.3f}",
+            extra(r, "shape", "solidity_ks"), extra(r, "arrangement", "window_spread_ratio"), f"{r['volume_fraction']:.3f}"]
+row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *cells(d), *cells(b), f"{d['area_fraction']:.3f}"]
+print("| " + " | ".join(row) + " |")
+PY
+  fi
+  rm -rf "$dir"  # a truth.vdb of the default size is some 100 MB
+}
+
+# Each step ends the measure on failure: `set -e` does not reach into a function tested by `if`.
+measure_one() {
+  local seed=$1 dir=$2
+  shift 2
+  "$bin" truth -o "$dir/t" --seed "$seed" "$@" > /dev/null || return
+  "$bin" particles "$dir/t/photo.png" -o "$dir/default.vdb" --size "$size" --quiet > /dev/null || return
+  "$bin" particles "$dir/t/photo.png" -o "$dir/baseline.vdb" --size "$size" "${baseline[@]}" --quiet > /dev/null || return
+  for run in default baseline; do
+    "$bin" compare "$dir/t/photo.png" "$dir/$run.vdb" --truth "$dir/t/truth.vdb" --report "$dir/$run.json" > /dev/null || return
+  done
+}
+
+echo "Baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
+echo
+echo "| truth | seed | photo particles | KS | volume W1/mean | solidity KS | window spread | volume fraction |" \
+     "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline window spread | baseline volume fraction | photo fraction |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+index=0
 for truth in "${truths[@]}"; do
   name=${truth%%|*}
   read -r -a options <<< "${truth#*|}"
   for seed in "${seeds[@]}"; do
-    "$bin" truth -o "$out/t" --seed "$seed" "${options[@]}" > /dev/null
-    for sizing in sections bbox; do
-      "$bin" particles "$out/t/photo.png" -o "$out/$sizing.vdb" --size "$size" --sizing "$sizing" --quiet > /dev/null
-      "$bin" compare "$out/t/photo.png" "$out/$sizing.vdb" --truth "$out/t/truth.vdb" --report "$out/$sizing.json" > /dev/null
-    done
-    python3 - "$out" "$name" "$seed" <<'PY'
-import json, sys
-s, b = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("sections", "bbox"))
-w = lambda r: r["truth"]["volume_wasserstein1_over_mean"]
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {s['photo_particles']} | {s['ks']:.3f} | {w(s):.3f} | {b['ks']:.3f} | {w(b):.3f} "
-      f"| {s['volume_fraction']:.3f} | {s['area_fraction']:.3f} |")
-PY
+    index=$((index + 1))
+    row="$out/$(printf %04d "$index").md"
+    if [ "$jobs" -le 1 ]; then
+      run_one "$name" "$seed" "$out/$index" "${options[@]}" > "$row"
+      cat "$row"
+    else
+      run_one "$name" "$seed" "$out/$index" "${options[@]}" > "$row" &
+      while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+    fi
   done
 done
+if [ "$jobs" -gt 1 ]; then
+  wait
+  cat "$out"/*.md
+fi

@@ -18,10 +18,19 @@ double sectionAreaFraction(const SolidVolume& volume) {
   return double(filled) / (double(d.x) * double(d.y));
 }
 
+nlohmann::json optionsJson(const ParticleTruthOptions& options) {
+  nlohmann::json classes = nlohmann::json::array();
+  for (const ParticleClass& c : options.classes)
+    classes.push_back({{"median_radius", c.meanRadius}, {"spread", c.radiusSpread}, {"share", c.share},
+                       {"srgb", {c.srgb[0], c.srgb[1], c.srgb[2]}}});
+  return {{"volume_fraction", options.volumeFraction}, {"classes", classes}, {"elongation", options.elongation},
+          {"flatten", options.flatten}, {"exponent", options.exponent}, {"blur", options.blur}, {"noise", options.noise}};
+}
+
 } // namespace
 
 nlohmann::json runTruth(const TruthJob& job) {
-  EllipsoidTruth truth = makeEllipsoidTruth(job.truth);  // refuses bad options before anything is written
+  ParticleTruth truth = makeParticleTruth(job.truth);  // refuses bad options before anything is written
   std::error_code error;
   std::filesystem::create_directories(job.folder, error);
   if (error) throw InputError("cannot create folder " + job.folder + ": " + error.message());
@@ -31,6 +40,8 @@ nlohmann::json runTruth(const TruthJob& job) {
   nlohmann::json report = {
       {"dims", {truth.volume.dims.x, truth.volume.dims.y, truth.volume.dims.z}},
       {"seed", job.truth.seed},
+      {"shape", truthShapeName(job.truth.shape)},
+      {"options", optionsJson(job.truth)},
       {"particles", truth.classOf.size()},
       {"particles_per_class", perClass},
       {"volume_fraction", truth.volumeFraction},

@@ -3,18 +3,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "validation/ellipsoidTruth.h"
+#include "validation/particleTruth.h"
 
 namespace solidtex {
 
 /// `solidtex truth`: a test photo with a known 3D truth behind it.
 struct TruthJob {
-  EllipsoidTruthOptions truth;
+  ParticleTruthOptions truth;
   std::string folder;  ///< receives photo.png, truth.vdb and truth.json
 };
 
 /// Makes the truth, writes photo.png (its middle section), truth.vdb and truth.json (the summary
-/// returned here: particles per class, volume fraction, the photo's area fraction) into the folder.
+/// returned here: the shape and options, particles per class, volume fraction, the photo's
+/// area fraction, every particle's volume) into the folder.
 nlohmann::json runTruth(const TruthJob& job);
 
 } // namespace solidtex
