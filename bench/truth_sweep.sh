@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The reconstruction's default options against the paper's baseline on photos cut from a family of
 # known 3D truths (`solidtex truth`: shapes, size mixes, fractions, particle counts, photo blur and
-# noise): section-area KS against the photo and particle-volume W1/mean against the truth, as a
-# Markdown table.
+# noise): section-area KS against the photo; particle-volume W1/mean, section solidity and roundness
+# KS and the window spread ratio against the truth and its sections; as a Markdown table.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
-# Environment: BASELINE_FLAGS  particles options of the baseline (default "--sizing bbox")
+# Environment: BASELINE_FLAGS  particles options of the baseline (default: the paper's,
+#                            "--sizing bbox --arrangement best-fit --smoothing 0")
 #              JOBS            truths made and rebuilt at once (default 1)
 #              SOLIDTEX_BIN    the solidtex binary (default ./build/cli/solidtex)
 set -euo pipefail
@@ -13,7 +14,7 @@ shift || true
 seeds=("$@")
 [ ${#seeds[@]} -eq 0 ] && seeds=(1 2)
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
-read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox}"
+read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox --arrangement best-fit --smoothing 0}"
 jobs=${JOBS:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -62,12 +63,10 @@ run_one() {
     python3 - "$dir" "$name" "$seed" <<'PY'
 import json, sys
 d, b = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "baseline"))
-def extra(r, section, key):
-    value = r.get(section, {}).get(key)
-    return "-" if value is None else f"{value:.3f}"
 def cells(r):
-    return [f"{r['ks']:.3f}", f"{r['truth']['volume_wasserstein1_over_mean']:.3f}",
-            extra(r, "shape", "solidity_ks"), extra(r, "arrangement", "window_spread_ratio"), f"{r['volume_fraction']:.3f}"]
+    t = r["truth"]
+    return [f"{r['ks']:.3f}", f"{t['volume_wasserstein1_over_mean']:.3f}", f"{t['solidity_ks']:.3f}",
+            f"{t['roundness_ks']:.3f}", f"{t['window_spread_ratio']:.2f}", f"{r['volume_fraction']:.3f}"]
 row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *cells(d), *cells(b), f"{d['area_fraction']:.3f}"]
 print("| " + " | ".join(row) + " |")
 PY
@@ -89,9 +88,9 @@ measure_one() {
 
 echo "Baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
 echo
-echo "| truth | seed | photo particles | KS | volume W1/mean | solidity KS | window spread | volume fraction |" \
-     "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline window spread | baseline volume fraction | photo fraction |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| truth | seed | photo particles | KS | volume W1/mean | solidity KS | roundness KS | window spread ratio | volume fraction |" \
+     "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline roundness KS | baseline window spread ratio | baseline volume fraction | photo fraction |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 index=0
 for truth in "${truths[@]}"; do
   name=${truth%%|*}

@@ -86,9 +86,10 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   return report;
 }
 
-// Arrangement windows span a few particle diameters, and at least two fit across the volume.
-int windowSideFor(double diameter, const Dims& dims) {
-  const int smallest = std::min({dims.x, dims.y, dims.z});
+// Arrangement windows span a few particle diameters, and at least two fit across the volume and
+// across the photo.
+int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
+  const int smallest = std::min({dims.x, dims.y, dims.z, photo.width, photo.height});
   return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
@@ -106,9 +107,10 @@ nlohmann::json runCompare(const CompareJob& job) {
   const double diameter = meanParticleDiameter(stats) * scale;
   SectionOptions sectionOptions = job.sections;
   sectionOptions.minArea = stats.minArea * scale * scale;
-  sectionOptions.windowSide = windowSideFor(diameter, volume.dims);
+  const cv::Mat labels = photoLabels(stats, scale);
+  sectionOptions.windowSide = windowSideFor(diameter, volume.dims, labels.size());
   const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
-  const SectionStatistics photoSections = measureLabelImage(photoLabels(stats, scale), sectionOptions);
+  const SectionStatistics photoSections = measureLabelImage(labels, sectionOptions);
   const SectionComparison shapes = compareSections(photoSections, sections, diameter);
   const std::vector<double> volumes = particleVolumes(volume);
   std::size_t occupied = 0;

@@ -67,7 +67,13 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
           {"rejected_per_bin", placement.rejectedPerBin},
           {"area_histogram", stats.histogram.ratios},
           {"volume_histogram", placement.volumeHistogram},
-          {"stop_reason", placement.stopReason}};
+          {"stop_reason", placement.stopReason},
+          {"shrinking",
+           {{"steps", placement.shrinkSteps},
+            {"smallest_scale", placement.smallestScale},
+            {"particles_shrunk", placement.particlesBeforeShrinking < 0
+                                     ? 0
+                                     : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
 }
 
 } // namespace

@@ -29,6 +29,8 @@ constexpr int kProgressEvery = 64;
 constexpr int kFailuresToRetire = 8;
 constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
 constexpr double kFirstPassShare = 0.85;
+constexpr double kShrink = 0.85;  // particles' size per shrink step once nothing fits
+constexpr int kMaxShrinks = 3;
 constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
 constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
@@ -160,7 +162,7 @@ public:
       roundUp_ = result_.particles.size() == placedBefore;
       passShare_ = 1;
       if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
-        if (topUpWithThePhotosShares()) continue;
+        if (topUpWithThePhotosShares() || shrinkTheRest()) continue;
         char reason[96];
         std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
                       stats_.areaFraction);
@@ -173,16 +175,33 @@ private:
   // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
   // small particles jams early): once no bin of those shares fits, the photo's shares fill the rest.
   bool topUpWithThePhotosShares() {
-    if (options_.particleWeights.empty() || toppedUp_) return false;
-    keepShapeMadeAhead();  // made at the larger sizes: dropped below
-    toppedUp_ = true;
+    if (options_.particleWeights.empty() || phase_ > 0) return false;
+    return restartAt(1, options_.voxelsPerPixel);
+  }
+
+  // A crowded photo (touching coins, dense gravel) can ask for more than random placement packs:
+  // once nothing fits, the photo's shares are tried again smaller, kShrink at a time.
+  bool shrinkTheRest() {
+    const int shrinks = std::max(1, phase_);  // phase 2 + k follows k shrinks
+    if (shrinks > kMaxShrinks) return false;
+    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = int(result_.particles.size());
+    result_.shrinkSteps = shrinks;
+    result_.smallestScale = std::pow(kShrink, shrinks);
+    return restartAt(shrinks + 1, options_.voxelsPerPixel * result_.smallestScale);
+  }
+
+  // Every bin open again at the photo's shares, with particles of `scale` voxels per pixel and
+  // their own random streams (phase).
+  bool restartAt(int phase, double scale) {
+    keepShapeMadeAhead();  // made at the earlier sizes: dropped below
+    phase_ = phase;
     roundUp_ = false;
     ratio_ = photoRatio_;
-    pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at the photo's
+    pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at these
     shapesMade_.clear();
     shapesKept_.clear();
     for (auto& failures : failures_) failures.clear();
-    scale_ = options_.voxelsPerPixel;
+    scale_ = scale;
     startSizeEstimates();
     bool any = false;
     for (int b = 0; b < kBins; ++b) {
@@ -203,7 +222,7 @@ private:
       if (pairs.empty()) return;
       std::vector<std::size_t> all(pairs.size());
       std::iota(all.begin(), all.end(), 0);
-      Rng rng(deriveSeed(options_.seed, kPilotStream + std::uint64_t(b) + (toppedUp_ ? kBins : 0)));
+      Rng rng(deriveSeed(options_.seed, kPilotStream + std::uint64_t(b) + std::uint64_t(phase_ * kBins)));
       // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
       double sum = 0, sumOfSquares = 0;
       int n = 0;
@@ -311,7 +330,7 @@ private:
   // The n-th shape of a pair comes from its own stream (seed, top-up, bin, pair, n), whenever and
   // wherever it is made; a pair's shapes are taken in that order.
   ReadyShape makeShape(const ShapeKey& key, std::uint64_t n) const {
-    std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + (toppedUp_ ? 1 : 0));
+    std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + std::uint64_t(phase_));
     for (const int part : key) stream = deriveSeed(stream, std::uint64_t(part));
     Rng rng(deriveSeed(stream, n));
     ReadyShape shape;
@@ -425,7 +444,8 @@ private:
   std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
   std::array<int, kBins> made_{};
   std::array<bool, kBins> open_{};
-  bool toppedUp_ = false, roundUp_ = false;
+  int phase_ = 0;  ///< 0: the sizing's shares; 1: topped up with the photo's; 2 on: shrunk phase_ - 1 times
+  bool roundUp_ = false;
   double passShare_ = kFirstPassShare;
   double scale_ = 1;  ///< voxels per photo pixel of the particles made now
   double targetVoxels_ = 0;

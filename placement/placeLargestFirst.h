@@ -58,10 +58,14 @@ struct PlacementResult {
   double volumeFraction = 0;
   std::array<double, 10> volumeHistogram{};  ///< ratios of placed particles per bin of volume (paper Fig. 10)
   std::string stopReason;          ///< "area fraction reached" | "particle limit reached" | "no bin fits any more ..."
+  int shrinkSteps = 0;             ///< times the photo's sizes were shrunk to fill a crowded volume
+  double smallestScale = 1;        ///< the last shrink's size factor
+  int particlesBeforeShrinking = -1;  ///< particles placed before the first shrink; -1: none
 };
 
-/// Places particles one by one, largest area bin first, each at the best-fit spot of `field`
-/// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached.
+/// Places particles one by one, largest area bin first, each at a spot of `field` that holds it
+/// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached. When nothing
+/// fits before that, the photo's sizes are tried again smaller (up to three times 0.85).
 /// Particles never overlap and never cross the walls.
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
                                   SpaciousnessField& field, const PlacementOptions& options);
