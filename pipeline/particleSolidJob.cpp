@@ -95,6 +95,8 @@ float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
   return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
 }
 
+constexpr int kSizingBootstraps = 16;  // enough for a spread to a few percent, at a second or so
+
 // The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
 // particles at the sizes the solid will have (sized first with the sharp hulls).
 ParticleFactory makeFactory(const ParticleSolidJob& job, const ExemplarStats& stats, double scale,
@@ -130,7 +132,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
 
   timer.start("sizing");
   SectionSizing sizing{1, {}, stats.histogram.ratios, 0};
-  if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed);
+  if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed, kSizingBootstraps);
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = scale * sizing.sizeFactor;
 
@@ -181,7 +183,13 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
     report["smoothing"]["solidity_ks"] = smoothing.solidityKs;
     report["smoothing"]["roundness_ks"] = smoothing.roundnessKs;
   }
-  if (job.sizing == Sizing::Sections) report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
+  if (job.sizing == Sizing::Sections) {
+    report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
+    const SizingUncertainty& u = sizing.uncertainty;
+    report["volume"]["sizing_uncertainty"] = {{"bootstraps", u.bootstraps},
+                                              {"size_factor_5_95", {u.sizeFactorLow, u.sizeFactorHigh}},
+                                              {"mean_volume_relative_spread", u.meanVolumeSpread}};
+  }
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
   if (job.report) writeJsonFile(*job.report, report);

@@ -21,7 +21,8 @@ constexpr double kSmoothing = 0.05;
 // Factors whose predicted sections are this close (KS) to the best one's fit as well, given the
 // photo's own counting noise (a KS of about 0.87 / sqrt(n) between two photos of n particles).
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
-constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
+constexpr double kMinVisibleShare = 0.5;
+constexpr std::uint64_t kBootstrapStream = 0x626f6f74;  // "boot"  // of a class's sections, at or above the photo's smallest area
 
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;
@@ -271,15 +272,64 @@ Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses
   return chosen;
 }
 
+// The photo's counted particles drawn again with replacement, as another photo of as many might show.
+PhotoSections resampled(const PhotoSections& photo, const AreaClasses& classes, Rng& rng) {
+  PhotoSections out{Eigen::VectorXd::Zero(classes.count()), {}};
+  for (std::size_t n = 0; n < photo.areas.size(); ++n) {
+    const auto& [area, weight] = photo.areas[uniformIndex(rng, photo.areas.size())];
+    out.perClass[std::max(0, classes.classOfArea(area))] += weight;
+    out.areas.emplace_back(area, weight);
+  }
+  std::sort(out.areas.begin(), out.areas.end());
+  return out;
+}
+
+// Mean particle volume a fit implies, up to a constant: each class's middle area, scaled by the
+// factor, to the power 3/2.
+double impliedMeanVolume(const Fit& fit, const AreaClasses& classes) {
+  double volume = 0, total = 0;
+  for (int c = 0; c < classes.count(); ++c) {
+    const double area = std::sqrt(classes.edges[std::size_t(c)] * classes.edges[std::size_t(c) + 1]) * fit.factor * fit.factor;
+    volume += fit.shares[c] * std::pow(area, 1.5);
+    total += fit.shares[c];
+  }
+  return total > 0 ? volume / total : 0;
+}
+
+// How far the 3D sizes could move with another photo of as many particles: the fit redone on
+// bootstrap resamples of the photo's particles (the particle shapes' sections kept).
+SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
+                            const PhotoSections& photo, const Fit& fit, int bootstraps, std::uint64_t seed) {
+  const auto count = static_cast<std::size_t>(bootstraps);
+  std::vector<double> factors(count), volumes(count);
+  tbb::parallel_for(0, bootstraps, [&](int b) {
+    Rng rng(deriveSeed(seed, kBootstrapStream + std::uint64_t(b)));
+    const Fit again = smallestGoodFit(samples, classes, minArea, resampled(photo, classes, rng));
+    factors[std::size_t(b)] = again.factor;
+    volumes[std::size_t(b)] = impliedMeanVolume(again, classes);
+  });
+  const double reference = impliedMeanVolume(fit, classes);
+  double squares = 0;
+  for (double v : volumes) squares += (v - reference) * (v - reference);
+  std::sort(factors.begin(), factors.end());
+  SizingUncertainty u;
+  u.bootstraps = bootstraps;
+  u.sizeFactorLow = factors[std::size_t(0.05 * (bootstraps - 1))];
+  u.sizeFactorHigh = factors[std::size_t(std::ceil(0.95 * (bootstraps - 1)))];
+  u.meanVolumeSpread = reference > 0 ? std::sqrt(squares / bootstraps) / reference : 0;
+  return u;
+}
+
 } // namespace
 
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                               std::uint64_t seed) {
+                               std::uint64_t seed, int bootstraps) {
   const AreaClasses classes = areaClassesOf(stats);
   const PhotoSections photo = photoSectionsOf(stats, classes);
-  const Fit fit = smallestGoodFit(sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed), classes,
-                                  stats.minArea, photo);
+  const std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
+  const Fit fit = smallestGoodFit(samples, classes, stats.minArea, photo);
   SectionSizing sizing;
+  if (bootstraps > 0) sizing.uncertainty = bootstrap(samples, classes, stats.minArea, photo, fit, bootstraps, seed);
   sizing.sizeFactor = fit.factor;
   sizing.predictedKs = fit.ks;
   // A class's share goes to its photo particles as the border correction weighs them, so within a

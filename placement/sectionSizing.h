@@ -61,19 +61,29 @@ Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const A
 /// (classes nothing was made for) get share 0.
 Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::VectorXd& observed, int iterations = 200);
 
+/// How much the 3D sizes depend on which particles the photo happened to show: the fit redone on
+/// bootstrap resamples of the photo's particles. A photo of a few dozen particles decides little.
+struct SizingUncertainty {
+  int bootstraps = 0;
+  double sizeFactorLow = 1, sizeFactorHigh = 1;  ///< 5th and 95th percentile of the size factor
+  double meanVolumeSpread = 0;                   ///< their mean particle volume's standard deviation / the fit's
+};
+
 /// Particle sizes whose random sections reproduce the photo's areas.
 struct SectionSizing {
   double sizeFactor = 1;               ///< 3D boxes are this many times the photo's (w,h) and depth
   std::vector<double> particleWeights; ///< per ExemplarStats::particles index: its share of the 3D particles
   std::array<double, 10> binRatios{};  ///< the same shares summed per area-histogram bin
   double predictedKs = 0;              ///< KS of the predicted section areas against the photo's
+  SizingUncertainty uncertainty;
 };
 
 /// Unfolds the photo's section areas at size factors 1 to 2 and keeps the smallest factor whose
 /// predicted sections are about as close (KS, within the photo's counting noise) to the photo's as
 /// the best one's: a plane rarely cuts a particle through its largest section, so the particles must
-/// be larger than their sections, by more when the photo's sizes are narrowly spread.
+/// be larger than their sections, by more when the photo's sizes are narrowly spread. With
+/// `bootstraps` > 0, also how uncertain that is (the fit redone on that many resamples).
 SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                               std::uint64_t seed);
+                               std::uint64_t seed, int bootstraps = 0);
 
 } // namespace solidtex
