@@ -95,7 +95,7 @@ float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
   return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
 }
 
-constexpr int kSizingBootstraps = 16;  // enough for a spread to a few percent, at a second or so
+constexpr int kSizingBootstraps = 8;  // a range of the size factor, at a fraction of the fit's time
 
 // The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
 // particles at the sizes the solid will have (sized first with the sharp hulls).

@@ -65,7 +65,7 @@ Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::Vecto
 /// bootstrap resamples of the photo's particles. A photo of a few dozen particles decides little.
 struct SizingUncertainty {
   int bootstraps = 0;
-  double sizeFactorLow = 1, sizeFactorHigh = 1;  ///< 5th and 95th percentile of the size factor
+  double sizeFactorLow = 1, sizeFactorHigh = 1;  ///< 5th and 95th percentile of the size factor (the range, for few)
   double meanVolumeSpread = 0;                   ///< their mean particle volume's standard deviation / the fit's
 };
 
