@@ -32,7 +32,7 @@ void checkOptions(const ParticleOptions& options) {
   checkRange("views", options.views, 1, 16);
   checkRange("shapes", options.shapes, 1, 100000);
   checkRange("contourVertices", options.contourVertices, 3, 10000);
-  checkRange("smoothing resolution", options.smoothing.resolution, 8, 256);
+  checkRange("smoothing resolution", options.smoothing.resolution, 8, 64);  // its padded grid grows as its cube
   if (!(options.smoothing.radius >= 0 && options.smoothing.radius <= 0.5))
     throw InputError("particle smoothing must be in [0, 0.5], got " + std::to_string(options.smoothing.radius));
 }

@@ -12,10 +12,10 @@ struct HullSmoothing {
   int resolution = 40;   ///< voxels across the hull's largest side while it is filtered
 };
 
-/// The hull voxelized, its inside indicator Gaussian-filtered (OpenVDB Filter) and meshed again at
-/// one half (volumeToMesh): edges and corners rounded over about `radius`, flat and gently curved
-/// parts kept. Closed and outward oriented, in the hull's own coordinates. Returns the hull itself
-/// when the radius is under one filter voxel.
+/// The hull voxelized, its inside indicator Gaussian-filtered (OpenCV, separable in 3D) and meshed
+/// again at one half (OpenVDB volumeToMesh): edges and corners rounded over about `radius`, flat and
+/// gently curved parts kept. Closed and outward oriented, in the hull's own coordinates. Returns
+/// the hull itself when sigma (radius x resolution) is under half a voxel.
 HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing);
 
 } // namespace solidtex

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "common/Error.h"
+#include "common/distributionDistance.h"
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"

@@ -182,12 +182,14 @@ private:
   // A crowded photo (touching coins, dense gravel) can ask for more than random placement packs:
   // once nothing fits, the photo's shares are tried again smaller, kShrink at a time.
   bool shrinkTheRest() {
-    const int shrinks = std::max(1, phase_);  // phase 2 + k follows k shrinks
+    const int shrinks = std::max(1, phase_);  // this one: phase k + 1 follows k shrinks
     if (shrinks > kMaxShrinks) return false;
-    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = int(result_.particles.size());
+    const int placed = int(result_.particles.size());
+    if (!restartAt(shrinks + 1, options_.voxelsPerPixel * std::pow(kShrink, shrinks))) return false;
+    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = placed;
     result_.shrinkSteps = shrinks;
     result_.smallestScale = std::pow(kShrink, shrinks);
-    return restartAt(shrinks + 1, options_.voxelsPerPixel * result_.smallestScale);
+    return true;
   }
 
   // Every bin open again at the photo's shares, with particles of `scale` voxels per pixel and

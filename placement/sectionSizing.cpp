@@ -21,8 +21,8 @@ constexpr double kSmoothing = 0.05;
 // Factors whose predicted sections are this close (KS) to the best one's fit as well, given the
 // photo's own counting noise (a KS of about 0.87 / sqrt(n) between two photos of n particles).
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
-constexpr double kMinVisibleShare = 0.5;
-constexpr std::uint64_t kBootstrapStream = 0x626f6f74;  // "boot"  // of a class's sections, at or above the photo's smallest area
+constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
+constexpr std::uint64_t kBootstrapStream = 0x626f6f74;  // "boot"
 
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;

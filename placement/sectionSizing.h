@@ -66,7 +66,7 @@ Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::Vecto
 struct SizingUncertainty {
   int bootstraps = 0;
   double sizeFactorLow = 1, sizeFactorHigh = 1;  ///< 5th and 95th percentile of the size factor (the range, for few)
-  double meanVolumeSpread = 0;                   ///< their mean particle volume's standard deviation / the fit's
+  double meanVolumeSpread = 0;                   ///< root mean square of their mean particle volume less the fit's, / the fit's
 };
 
 /// Particle sizes whose random sections reproduce the photo's areas.

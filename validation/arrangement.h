@@ -2,7 +2,6 @@
 /// @file
 /// How particles are spread over an image: local crowdedness and spacing.
 
-#include <cstdint>
 #include <vector>
 
 #include <opencv2/core.hpp>

@@ -4,8 +4,7 @@
 #include <numbers>
 #include <numeric>
 
-#include <opencv2/imgproc.hpp>
-
+#include "common/distributionDistance.h"
 #include "segmentation/resampleRegions.h"
 #include "validation/arrangement.h"
 
@@ -37,7 +36,7 @@ SectionSummary summarize(const SectionStatistics& s, const ShapeColumns& columns
   out.windows = s.windowFractions.size();
   out.windowSpread = standardDeviation(s.windowFractions);
   out.neighbours = s.neighbourDistances.size();
-  out.neighbourDistance = mean(s.neighbourDistances) / diameter;
+  out.neighbourDistance = diameter > 0 ? mean(s.neighbourDistances) / diameter : 0;
   return out;
 }
 

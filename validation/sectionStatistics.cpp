@@ -158,7 +158,7 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
   });
   SectionStatistics stats;
   double particlePixels = 0, allPixels = 0;
-  const auto append = [](std::vector<auto>& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+  const auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const SectionStatistics& p = perPlane[i];
     append(stats.areas, p.areas);

@@ -8,7 +8,6 @@
 #include <opencv2/core.hpp>
 
 #include "common/Grid.h"
-#include "common/distributionDistance.h"
 #include "segmentation/regionShape.h"
 
 namespace solidtex {

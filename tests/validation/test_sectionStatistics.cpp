@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/distributionDistance.h"
 #include "validation/sectionStatistics.h"
 
 namespace solidtex {
