@@ -15,8 +15,8 @@ namespace solidtex {
 namespace {
 
 constexpr double kMinShapeArea = 20;   // samples: smaller sections are too coarse to have a shape
-constexpr int kHullsTried = 8;         // of the pool, smoothed per candidate
-constexpr int kShapesPerCandidate = 48;
+constexpr int kHullsTried = 16;        // of the pool, smoothed per candidate
+constexpr int kShapesPerCandidate = 64;
 constexpr int kPlanesPerShape = 8;
 constexpr std::uint64_t kFitStream = 0x736d6f6f;  // "smoo"
 
