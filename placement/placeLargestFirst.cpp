@@ -329,7 +329,7 @@ private:
     return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
   }
 
-  // The n-th shape of a pair comes from its own stream (seed, top-up, bin, pair, n), whenever and
+  // The n-th shape of a pair comes from its own stream (seed, phase, bin, pair, n), whenever and
   // wherever it is made; a pair's shapes are taken in that order.
   ReadyShape makeShape(const ShapeKey& key, std::uint64_t n) const {
     std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + std::uint64_t(phase_));
@@ -367,8 +367,8 @@ private:
     return shape;
   }
 
-  // Uniform: random spots that may hold the shape first. Best fit (paper 3.7), and uniform once its
-  // random spots are spent: the smallest spots that may hold the shape first. Checked voxel by voxel.
+  // Uniform draws random spots that may hold the shape; best fit (paper 3.7), and uniform once its
+  // random spots are spent, tries the smallest such spots first. Each is checked voxel by voxel.
   bool place(const detail::FitShape& shape, const ParticleSize& size, int bin) {
     fieldUpdate_.wait();
     const float cap = field_.maxRadius();
