@@ -1,12 +1,19 @@
 #pragma once
 /// @file
-/// Distances between two empirical distributions on the line.
+/// Summaries of, and distances between, empirical distributions on the line.
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace solidtex {
+
+/// Arithmetic mean; 0 for no values.
+inline double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0 : sum / double(values.size());
+}
 
 /// Two-sample Kolmogorov-Smirnov statistic: the largest gap between the empirical CDFs; 1 when
 /// either sample is empty.

@@ -20,14 +20,6 @@ constexpr int kShapesPerCandidate = 64;
 constexpr int kPlanesPerShape = 8;
 constexpr std::uint64_t kFitStream = 0x736d6f6f;  // "smoo"
 
-struct ShapeColumns {
-  std::vector<double> solidity, roundness;
-  void add(const RegionShape& s) {
-    solidity.push_back(s.solidity);
-    roundness.push_back(s.roundness);
-  }
-};
-
 // The photo's statistical particles as the solid would show them: masks resampled to voxels.
 ShapeColumns photoShapes(const ExemplarStats& stats, double voxelsPerPixel) {
   ShapeColumns out;

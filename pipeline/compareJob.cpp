@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <numeric>
 
 #include "common/Error.h"
 #include "common/distributionDistance.h"
@@ -33,10 +32,6 @@ std::vector<double> particleVolumes(const SolidVolume& volume) {
   }
   counts.erase(std::remove(counts.begin(), counts.end(), 0.0), counts.end());
   return counts;
-}
-
-double mean(const std::vector<double>& values) {
-  return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
 nlohmann::json summaryJson(const SectionSummary& s) {

@@ -20,4 +20,13 @@ struct RegionShape {
 /// Measures a region given as its pixels (any order, no repeats).
 RegionShape measureRegion(const std::vector<cv::Point>& pixels);
 
+/// Solidity and roundness of many regions, one column each, for distribution distances.
+struct ShapeColumns {
+  std::vector<double> solidity, roundness;
+  void add(const RegionShape& shape) {
+    solidity.push_back(shape.solidity);
+    roundness.push_back(shape.roundness);
+  }
+};
+
 } // namespace solidtex

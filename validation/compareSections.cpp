@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <numeric>
 
 #include "common/distributionDistance.h"
 #include "segmentation/resampleRegions.h"
@@ -11,20 +10,9 @@
 namespace solidtex {
 namespace {
 
-double mean(const std::vector<double>& values) {
-  return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
-}
-
-struct ShapeColumns {
-  std::vector<double> solidity, roundness;
-};
-
 ShapeColumns columnsOf(const std::vector<RegionShape>& shapes) {
   ShapeColumns c;
-  for (const RegionShape& s : shapes) {
-    c.solidity.push_back(s.solidity);
-    c.roundness.push_back(s.roundness);
-  }
+  for (const RegionShape& s : shapes) c.add(s);
   return c;
 }
 

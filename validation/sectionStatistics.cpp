@@ -60,18 +60,24 @@ void forEachRegion(const cv::Mat& labels, Visit&& visit) {
     }
 }
 
+// One image's measures and the pixel counts behind its area fraction, which add up over planes.
+struct ImageMeasures {
+  SectionStatistics stats;
+  std::size_t particlePixels = 0, pixels = 0;  // pixels inside the volume
+};
+
 /// Every measure of one image; arrangement measures only where the whole window lies in the volume.
-SectionStatistics measureImage(const cv::Mat& labels, bool axisAligned, const SectionOptions& options) {
-  SectionStatistics out;
+ImageMeasures measureImage(const cv::Mat& labels, bool axisAligned, const SectionOptions& options) {
+  ImageMeasures measures;
+  SectionStatistics& out = measures.stats;
   out.planes = 1;
   std::vector<cv::Point2d> centres;
   std::vector<bool> counted;
-  std::size_t particlePixels = 0, pixels = 0;
   for (int y = 0; y < labels.rows; ++y)
     for (int x = 0; x < labels.cols; ++x) {
       const std::int32_t id = labels.at<std::int32_t>(y, x);
-      pixels += id != kOutside;
-      particlePixels += id > 0;
+      measures.pixels += id != kOutside;
+      measures.particlePixels += id > 0;
     }
   forEachRegion(labels, [&](const Region& region) {
     const double area = double(region.pixels.size());
@@ -84,12 +90,12 @@ SectionStatistics measureImage(const cv::Mat& labels, bool axisAligned, const Se
     centres.push_back(sum / area);
     counted.push_back(!region.cut);
   });
-  out.areaFraction = pixels ? double(particlePixels) / double(pixels) : 0;
+  out.areaFraction = measures.pixels ? double(measures.particlePixels) / double(measures.pixels) : 0;
   if (axisAligned && options.windowSide > 0) {
     out.windowFractions = windowFractions(labels, options.windowSide);
     out.neighbourDistances = nearestNeighbourDistances(centres, counted, labels.size());
   }
-  return out;
+  return measures;
 }
 
 /// The square window of the plane through `through` with this normal that covers the plane's whole
@@ -141,8 +147,7 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
 SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids, const SectionOptions& options) {
   const std::vector<SlicePlane> planes = planesFor(dims, options);
   const std::size_t axisPlanes = std::size_t(3 * options.offsetsPerAxis);
-  std::vector<SectionStatistics> perPlane(planes.size());
-  std::vector<std::size_t> pixels(planes.size());
+  std::vector<ImageMeasures> perPlane(planes.size());
   tbb::parallel_for(std::size_t(0), planes.size(), [&](std::size_t i) {
     const bool axisAligned = i < axisPlanes;
     SlicePlane plane = planes[i];
@@ -153,29 +158,28 @@ SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_
     std::vector<std::int32_t> image = slice(dims, ids, plane, kOutside);
     cv::Mat labels(plane.height, plane.width, CV_32S, image.data());
     if (resample) labels = resampleLabels(labels, 1 / options.step);
-    pixels[i] = labels.total() - std::size_t(cv::countNonZero(labels == kOutside));
     perPlane[i] = measureImage(labels, axisAligned, options);
   });
   SectionStatistics stats;
-  double particlePixels = 0, allPixels = 0;
+  std::size_t particlePixels = 0, pixels = 0;
   const auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
   for (std::size_t i = 0; i < planes.size(); ++i) {
-    const SectionStatistics& p = perPlane[i];
+    const SectionStatistics& p = perPlane[i].stats;
     append(stats.areas, p.areas);
     append(stats.shapes, p.shapes);
     append(stats.windowFractions, p.windowFractions);
     append(stats.neighbourDistances, p.neighbourDistances);
-    particlePixels += p.areaFraction * double(pixels[i]);
-    allPixels += double(pixels[i]);
+    particlePixels += perPlane[i].particlePixels;
+    pixels += perPlane[i].pixels;
   }
   stats.planes = int(planes.size());
-  stats.areaFraction = allPixels > 0 ? particlePixels / allPixels : 0;
+  stats.areaFraction = pixels ? double(particlePixels) / double(pixels) : 0;
   return stats;
 }
 
 SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions& options) {
   CV_Assert(labels.type() == CV_32S);
-  return measureImage(labels, true, options);
+  return measureImage(labels, true, options).stats;
 }
 
 } // namespace solidtex
