@@ -5,7 +5,7 @@
 # KS and the window spread ratio against the truth and its sections; as a Markdown table.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
 # Environment: BASELINE_FLAGS  particles options of the baseline (default: the paper's,
-#                            "--sizing bbox --arrangement best-fit --smoothing 0")
+#                            "--sizing bbox --arrangement best-fit --smoothing 0 --boundary walls")
 #              JOBS            truths made and rebuilt at once (default 1)
 #              SOLIDTEX_BIN    the solidtex binary (default ./build/cli/solidtex)
 set -euo pipefail
@@ -14,7 +14,7 @@ shift || true
 seeds=("$@")
 [ ${#seeds[@]} -eq 0 ] && seeds=(1 2)
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
-read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox --arrangement best-fit --smoothing 0}"
+read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox --arrangement best-fit --smoothing 0 --boundary walls}"
 jobs=${JOBS:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

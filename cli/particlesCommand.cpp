@@ -17,6 +17,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto placer = std::make_shared<std::string>("edt");
   auto sizing = std::make_shared<std::string>("sections");
   auto arrangement = std::make_shared<std::string>("uniform");
+  auto boundary = std::make_shared<std::string>("open");
   CLI::App* command = app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
@@ -31,6 +32,10 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--arrangement", *arrangement,
                       "uniform: each particle at a random spot that holds it, scattered as in most photos; "
                       "best-fit: the paper's, the tightest spot")
+      ->capture_default_str();
+  command->add_option("--boundary", *boundary,
+                      "open: the volume is cut from a larger solid, particles run through its faces; "
+                      "walls: the paper's, particles stay inside")
       ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")->capture_default_str();
   auto smoothing = std::make_shared<std::string>("auto");
@@ -47,11 +52,12 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
-  return [job, size, dims, placer, sizing, arrangement, smoothing, threads] {
+  return [job, size, dims, placer, sizing, arrangement, boundary, smoothing, threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
     job->placer = parsePlacerKind(*placer);
     job->sizing = parseSizing(*sizing);
     job->arrangement = parseArrangement(*arrangement);
+    job->boundary = parseBoundary(*boundary);
     job->smoothing = parseSmoothing(*smoothing);
     const ThreadLimit limit(*threads);
     const auto report = runParticleSolid(*job);

@@ -10,6 +10,7 @@
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
 #include "validation/compareSections.h"
+#include "validation/particleVolumes.h"
 #include "voxel/vdbIO.h"
 
 namespace solidtex {
@@ -23,15 +24,11 @@ double scaleOf(const CompareJob& job, const SolidVolume& volume) {
   return std::stod(it->second);
 }
 
-std::vector<double> particleVolumes(const SolidVolume& volume) {
-  std::vector<double> counts;
-  for (std::int32_t id : volume.particleId) {
-    if (id <= 0) continue;
-    if (std::size_t(id) > counts.size()) counts.resize(std::size_t(id), 0);
-    counts[std::size_t(id - 1)] += 1;
-  }
-  counts.erase(std::remove(counts.begin(), counts.end(), 0.0), counts.end());
-  return counts;
+// A solid made with an open boundary is a block of a larger one: its faces cut particles.
+std::vector<double> particleVolumesOf(const SolidVolume& volume) {
+  const auto boundary = volume.metadata.find("boundary");
+  const bool cut = boundary != volume.metadata.end() && boundary->second == "open";
+  return particleVolumes(volume.dims, volume.particleId, cut);
 }
 
 nlohmann::json summaryJson(const SectionSummary& s) {
@@ -65,7 +62,7 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   const SolidVolume truth = readVdb(truthPath);
   if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
   const double truthScale = truthScaleOf(truthPath, truth);
-  std::vector<double> truthVolumes = particleVolumes(truth);
+  std::vector<double> truthVolumes = particleVolumesOf(truth);
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
   for (double& v : volumes) v /= scale * scale * scale;
   const double truthMean = mean(truthVolumes);
@@ -108,7 +105,7 @@ nlohmann::json runCompare(const CompareJob& job) {
   const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
   const SectionStatistics photoSections = measureLabelImage(labels, sectionOptions);
   const SectionComparison shapes = compareSections(photoSections, sections, diameter);
-  const std::vector<double> volumes = particleVolumes(volume);
+  const std::vector<double> volumes = particleVolumesOf(volume);
   std::size_t occupied = 0;
   for (std::int32_t id : volume.particleId) occupied += id > 0;
 

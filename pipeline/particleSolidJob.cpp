@@ -9,6 +9,7 @@
 #include "common/Error.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
+#include "placement/cropPlacement.h"
 #include "placement/placeLargestFirst.h"
 #include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
@@ -53,6 +54,7 @@ std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const
           {"placer", placerName(job.placer)},
           {"sizing", sizingName(job.sizing)},
           {"arrangement", arrangementName(job.arrangement)},
+          {"boundary", boundaryName(job.boundary)},
           {"size_factor", std::to_string(sizing.sizeFactor)},
           {"smoothing", std::to_string(smoothing)}};
 }
@@ -77,6 +79,18 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
 }
 
 } // namespace
+
+Boundary parseBoundary(const std::string& name) {
+  if (name == "open") return Boundary::Open;
+  if (name == "walls") return Boundary::Walls;
+  throw InputError("unknown boundary '" + name + "': use open or walls");
+}
+
+const char* boundaryName(Boundary boundary) { return boundary == Boundary::Open ? "open" : "walls"; }
+
+int openBoundaryMargin(const ExemplarStats& stats, double particleScale) {
+  return int(std::ceil(largestBoxSide(stats) * particleScale / 2));
+}
 
 int largestBoxSide(const ExemplarStats& stats) {
   int side = 1;
@@ -131,15 +145,18 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const ParticleFactory factory = makeFactory(job, stats, scale, smoothing);
 
   timer.start("sizing");
-  SectionSizing sizing{1, {}, stats.histogram.ratios, 0};
+  SectionSizing sizing{1, {}, stats.histogram.ratios, 0, {}};
   if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed, kSizingBootstraps);
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = scale * sizing.sizeFactor;
 
   timer.start("placement");
-  auto field = makeSpaciousnessField(job.placer, job.dims, placementRadiusCap(stats, particleScale));
+  const int margin = job.boundary == Boundary::Open ? openBoundaryMargin(stats, particleScale) : 0;
+  const Dims placed{job.dims.x + 2 * margin, job.dims.y + 2 * margin, job.dims.z + 2 * margin};
+  auto field = makeSpaciousnessField(job.placer, placed, placementRadiusCap(stats, particleScale));
   PlacementOptions placementOptions;
-  placementOptions.dims = job.dims;
+  placementOptions.dims = placed;
+  if (margin > 0) placementOptions.counted = VolumeBox{{margin, margin, margin}, job.dims};
   placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
   placementOptions.arrangement = job.arrangement;
@@ -147,13 +164,14 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
     placementOptions.particleWeights = sizing.particleWeights;
     placementOptions.sizeFactor = sizing.sizeFactor;
   }
-  placementOptions.progress = [&](double fraction, int placed) {
+  placementOptions.progress = [&](double fraction, int count) {
     char line[128];
-    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", placed, fraction,
+    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count, fraction,
                   stats.areaFraction);
     progress.update(line);
   };
   PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
+  if (margin > 0) placement = cropPlacement(placement, {margin, margin, margin}, job.dims);
   field.reset();  // its memory goes to the colour and the .vdb's grids
   progress.done();
 
@@ -172,6 +190,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"placer", placerName(job.placer)},
                            {"sizing", sizingName(job.sizing)},
                            {"arrangement", arrangementName(job.arrangement)},
+                           {"boundary", boundaryName(job.boundary)},
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},

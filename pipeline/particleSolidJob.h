@@ -14,6 +14,16 @@
 
 namespace solidtex {
 
+/// What the volume's faces are to its particles.
+enum class Boundary {
+  Open,   ///< the volume is cut from a larger solid: particles run through its faces
+  Walls,  ///< the paper's: particles stay inside, and thin out along every face
+};
+
+/// "open" | "walls"; throws InputError otherwise.
+Boundary parseBoundary(const std::string& name);
+const char* boundaryName(Boundary boundary);
+
 /// `solidtex particles`: photo to particle solid (.vdb, report, previews).
 struct ParticleSolidJob {
   std::string photo;
@@ -24,6 +34,7 @@ struct ParticleSolidJob {
   PlacerKind placer = PlacerKind::Edt;
   Sizing sizing = Sizing::Sections;
   Arrangement arrangement = Arrangement::Uniform;
+  Boundary boundary = Boundary::Open;
   ParticleOptions particles;            ///< its seed is replaced by `seed`, its smoothing by `smoothing`
   std::optional<double> smoothing;      ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;
@@ -45,6 +56,10 @@ double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims);
 
 /// The spaciousness cap for placing the photo's particles (the paper's sqrt(3) D / 2, plus a voxel).
 float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel);
+
+/// The margin an open boundary places particles in around the volume: the radius of the largest
+/// particle, so that the faces of the placement's volume leave the volume's own faces unaffected.
+int openBoundaryMargin(const ExemplarStats& stats, double particleScale);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runParticleSolid(const ParticleSolidJob& job);

@@ -102,6 +102,12 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options, c
   if (options.candidatesPerTry < 1)
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
+  if (options.counted) {
+    const VolumeBox& c = *options.counted;
+    if (c.dims.count() == 0 || !options.dims.contains(c.lo.x, c.lo.y, c.lo.z) ||
+        !options.dims.contains(c.lo.x + c.dims.x - 1, c.lo.y + c.dims.y - 1, c.lo.z + c.dims.z - 1))
+      throw std::invalid_argument("placement: the counted box is not inside the volume");
+  }
   if (!(options.dims == field.dims()))
     throw std::invalid_argument("placement: the options' dims differ from the spaciousness field's");
 }
@@ -132,7 +138,8 @@ public:
     startSizeEstimates();
     result_.dims = options.dims;
     result_.ids.assign(options.dims.count(), 0);
-    targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(options.dims.count()));
+    counted_ = options.counted.value_or(VolumeBox{{0, 0, 0}, options.dims});
+    targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims.count()));
   }
 
   // A task may still run when an exception leaves run(): wait for it, and drop its own error.
@@ -151,7 +158,7 @@ public:
       const std::size_t placedBefore = result_.particles.size();
       for (int b = kBins - 1; b >= 0; --b) {
         while (open_[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
-               result_.placedPerBin[std::size_t(b)] < quota(b))
+               countedPerBin_[std::size_t(b)] < quota(b))
           if (!attempt(b) && pairs_[std::size_t(b)].empty()) open_[std::size_t(b)] = false;
         if (fractionReached()) return finish("area fraction reached");
         if (limitReached()) return finish("particle limit reached");
@@ -245,7 +252,7 @@ private:
   }
 
   double scaled(int pixels) const { return std::max(1.0, std::round(pixels * scale_)); }
-  double fraction() const { return double(placedVoxels_) / double(options_.dims.count()); }
+  double fraction() const { return double(placedVoxels_) / double(counted_.dims.count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
     return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
@@ -276,7 +283,7 @@ private:
     double missing = targetVoxels_ - double(placedVoxels_), perParticle = 0;
     for (int i = 0; i < kBins; ++i)
       if (open_[std::size_t(i)]) {
-        missing += result_.placedPerBin[std::size_t(i)] * expectedVolume(i);
+        missing += countedPerBin_[std::size_t(i)] * expectedVolume(i);
         perParticle += ratio_[std::size_t(i)] * expectedVolume(i);
       }
     const double share = passShare_ * ratio_[std::size_t(b)] * missing / perParticle;
@@ -404,18 +411,23 @@ private:
     const int id = int(result_.particles.size()) + 1;
     const Voxel origin = detail::originAt(shape, spot);
     volumeVoxels_.clear();
+    std::size_t counted = 0;
     for (const Voxel& v : shape.voxels) {
       const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};
       result_.ids[options_.dims.index(w)] = id;
       occupied_.set(options_.dims.index(w));
       volumeVoxels_.push_back(w);
+      counted += counted_.contains(w);
     }
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
     fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
     result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), scale_});
     ++result_.placedPerBin[std::size_t(bin)];
-    placedVoxels_ += shape.voxels.size();
+    placedVoxels_ += counted;
+    // A particle counts by its share inside the counted box: the margin's walls keep large particles
+    // out of a wider band than small ones, and would otherwise crowd them into the box.
+    countedPerBin_[std::size_t(bin)] += double(counted) / double(shape.voxels.size());
     // Placed shapes only: in a crowded volume the large shapes of a bin fail more often.
     ++made_[std::size_t(bin)];
     madeVoxels_[std::size_t(bin)] += double(shape.voxels.size());
@@ -450,8 +462,10 @@ private:
   bool roundUp_ = false;
   double passShare_ = kFirstPassShare;
   double scale_ = 1;  ///< voxels per photo pixel of the particles made now
+  VolumeBox counted_;            ///< where the fraction and the particles per bin are counted
+  std::array<double, kBins> countedPerBin_{};  ///< particles placed, each by its share inside counted_
   double targetVoxels_ = 0;
-  std::size_t placedVoxels_ = 0;
+  std::size_t placedVoxels_ = 0;  ///< inside counted_
   PlacementResult result_;
   detail::VoxelBits occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
   detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)

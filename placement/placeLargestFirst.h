@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,18 @@ enum class Arrangement {
 Arrangement parseArrangement(const std::string& name);
 const char* arrangementName(Arrangement arrangement);
 
+/// A box of voxels: `dims` voxels from `lo`.
+struct VolumeBox {
+  Voxel lo;
+  Dims dims;
+  bool contains(const Voxel& v) const { return dims.contains(v.x - lo.x, v.y - lo.y, v.z - lo.z); }
+};
+
 struct PlacementOptions {
   Dims dims{128, 128, 128};
+  /// Where the area fraction is reached and counted, when the volume is a margin around the solid
+  /// that will be cut out of it (particles then run through the solid's faces); empty: everywhere.
+  std::optional<VolumeBox> counted;
   double voxelsPerPixel = 1;      ///< photo pixels to voxels
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
@@ -55,7 +66,7 @@ struct PlacementResult {
   std::vector<PlacedParticle> particles;
   std::array<int, 10> placedPerBin{};
   std::array<int, 10> rejectedPerBin{};  ///< (w,h) tries that found no spot
-  double volumeFraction = 0;
+  double volumeFraction = 0;       ///< of the counted box
   std::array<double, 10> volumeHistogram{};  ///< ratios of placed particles per bin of volume (paper Fig. 10)
   std::string stopReason;          ///< "area fraction reached" | "particle limit reached" | "no bin fits any more ..."
   int shrinkSteps = 0;             ///< times the photo's sizes were shrunk to fill a crowded volume

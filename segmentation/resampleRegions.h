@@ -12,7 +12,8 @@ namespace solidtex {
 cv::Mat resampleMask(const cv::Mat& mask, double factor);
 
 /// A label image (CV_32S, 0 background, regions of equal positive labels) resampled by `factor`,
-/// each region by resampleMask; where two would claim a pixel, the later label keeps it.
+/// each region as resampleMask would on the whole image's grid; where two would claim a pixel, the
+/// later label keeps it.
 cv::Mat resampleLabels(const cv::Mat& labels, double factor);
 
 } // namespace solidtex

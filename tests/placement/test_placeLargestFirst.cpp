@@ -9,6 +9,7 @@
 #include <tbb/global_control.h>
 
 #include "common/Error.h"
+#include "placement/cropPlacement.h"
 #include "placement/placeLargestFirst.h"
 
 namespace solidtex {
@@ -183,6 +184,65 @@ TEST(PlaceLargestFirstOptions, NothingToPlaceForAZeroFraction) {
   EXPECT_TRUE(r.particles.empty());
   EXPECT_EQ(r.volumeFraction, 0);
   EXPECT_FALSE(r.stopReason.empty());
+}
+
+// The share of the voxels within `depth` of a face that particles occupy.
+double faceShellFraction(const PlacementResult& r, int depth) {
+  std::size_t occupied = 0, count = 0;
+  for (int z = 0; z < r.dims.z; ++z)
+    for (int y = 0; y < r.dims.y; ++y)
+      for (int x = 0; x < r.dims.x; ++x) {
+        const int toFace = std::min({x, y, z, r.dims.x - 1 - x, r.dims.y - 1 - y, r.dims.z - 1 - z});
+        if (toFace >= depth) continue;
+        ++count;
+        occupied += r.ids[r.dims.index(x, y, z)] != 0;
+      }
+  return double(occupied) / double(count);
+}
+
+// A block cut out of a placement in a larger volume (the open boundary): the photo's fraction inside
+// the block, particles running through its faces as often as anywhere, ids renumbered consistently.
+TEST(CropPlacement, ABlockOfALargerPlacementHasNoWallsToThinItsFaces) {
+  const ExemplarStats stats = discStats(kDiscs, 0.25);
+  const ParticleFactory factory(stats, fewShapes());
+  const Dims inner{48, 48, 48}, outer{64, 64, 64};
+  const auto field = makeSpaciousnessField(PlacerKind::Edt, outer, 20);
+  PlacementOptions options;
+  options.dims = outer;
+  options.counted = VolumeBox{{8, 8, 8}, inner};
+  options.voxelsPerPixel = 0.8;
+  const PlacementResult whole = placeLargestFirst(stats, factory, *field, options);
+  const PlacementResult block = cropPlacement(whole, {8, 8, 8}, inner);
+  EXPECT_NEAR(block.volumeFraction, whole.volumeFraction, 1e-12);
+  EXPECT_NEAR(block.volumeFraction, 0.25, 0.02);
+  ASSERT_FALSE(block.particles.empty());
+  EXPECT_LT(block.particles.size(), whole.particles.size());
+  std::vector<std::size_t> voxels(block.particles.size() + 1, 0);
+  for (int z = 0; z < inner.z; ++z)
+    for (int y = 0; y < inner.y; ++y)
+      for (int x = 0; x < inner.x; ++x) {
+        const std::int32_t id = block.ids[inner.index(x, y, z)];
+        ++voxels[std::size_t(id)];
+        if (id == 0) continue;
+        const PlacedParticle& p = block.particles[std::size_t(id - 1)];
+        EXPECT_EQ(p.id, id);
+        EXPECT_NE(whole.ids[outer.index(x + 8, y + 8, z + 8)], 0);
+        EXPECT_TRUE(x >= p.origin.x && y >= p.origin.y && z >= p.origin.z && x < p.origin.x + p.box.x &&
+                    y < p.origin.y + p.box.y && z < p.origin.z + p.box.z);
+      }
+  int placed = 0;
+  for (const PlacedParticle& p : block.particles) {
+    EXPECT_EQ(p.voxelCount, voxels[std::size_t(p.id)]);
+    placed += 1;
+  }
+  EXPECT_EQ(placed, std::accumulate(block.placedPerBin.begin(), block.placedPerBin.end(), 0));
+  // Walls keep particle centres half a particle from every face; a block's faces cut particles as
+  // any plane does.
+  const double shell = faceShellFraction(block, 2);
+  EXPECT_NEAR(shell / block.volumeFraction, 1, 0.25);
+  const PlacementResult walled = place(stats, PlacerKind::Edt, inner);
+  EXPECT_LT(faceShellFraction(walled, 2) / walled.volumeFraction, shell / block.volumeFraction - 0.1);
+  EXPECT_THROW(cropPlacement(whole, {20, 8, 8}, inner), std::invalid_argument);
 }
 
 TEST(PlaceLargestFirstOptions, StopsAtTheParticleLimit) {
