@@ -2,7 +2,9 @@
 # The reconstruction's default options against the paper's baseline on photos cut from a family of
 # known 3D truths (`solidtex truth`: shapes, size mixes, fractions, particle counts, photo blur and
 # noise): section-area KS against the photo; particle-volume W1/mean, section solidity and roundness
-# KS and the window spread ratio against the truth and its sections; as a Markdown table.
+# KS and the window spread ratio against the truth and its sections; as a Markdown table. An
+# ideal solid per row: a second truth of the same settings and another seed, made at the solid's
+# voxels per pixel and compared the same way: what a perfect reconstruction would score.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
 # Environment: BASELINE_FLAGS  particles options of the baseline (default: the paper's,
 #                            "--sizing bbox --arrangement best-fit --smoothing 0 --boundary walls")
@@ -62,12 +64,13 @@ run_one() {
   else
     python3 - "$dir" "$name" "$seed" <<'PY'
 import json, sys
-d, b = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "baseline"))
+d, b, i = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "baseline", "ideal"))
 def cells(r):
     t = r["truth"]
     return [f"{r['ks']:.3f}", f"{t['volume_wasserstein1_over_mean']:.3f}", f"{t['solidity_ks']:.3f}",
             f"{t['roundness_ks']:.3f}", f"{t['window_spread_ratio']:.2f}", f"{r['volume_fraction']:.3f}"]
-row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *cells(d), *cells(b), f"{d['area_fraction']:.3f}"]
+row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *cells(d), *cells(b), *cells(i)[1:5],
+       f"{d['area_fraction']:.3f}"]
 print("| " + " | ".join(row) + " |")
 PY
   fi
@@ -84,13 +87,44 @@ measure_one() {
   for run in default baseline; do
     "$bin" compare "$dir/t/photo.png" "$dir/$run.vdb" --truth "$dir/t/truth.vdb" --report "$dir/$run.json" > /dev/null || return
   done
+  local scale ideal
+  scale=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["voxels_per_pixel"])' "$dir/default.json")
+  read -r -a ideal <<< "$(scaled_truth_options "$scale" "$@")"
+  "$bin" truth -o "$dir/ideal" --seed $((seed + 1000)) "${ideal[@]}" > /dev/null || return
+  "$bin" compare "$dir/t/photo.png" "$dir/ideal/truth.vdb" --scale "$scale" --truth "$dir/t/truth.vdb" \
+    --report "$dir/ideal.json" > /dev/null
+}
+
+# The truth options with lengths (radii, dims) times SCALE: the same material at the solid's voxels.
+scaled_truth_options() {
+  python3 - "$@" <<'PY'
+import sys
+scale, options = float(sys.argv[1]), sys.argv[2:]
+lengths = {"--small-radius": [7.0], "--large-radius": [13.0], "--dims": [640.0, 640.0, 72.0]}
+rest, i = [], 0
+while i < len(options):
+    if options[i] in lengths:
+        n = len(lengths[options[i]])
+        lengths[options[i]] = [float(v) for v in options[i + 1:i + 1 + n]]
+        i += 1 + n
+    else:
+        rest.append(options[i])
+        i += 1
+for key, values in lengths.items():
+    if key == "--dims":
+        rest += [key] + [str(max(8, round(v * scale))) for v in values]
+    else:
+        rest += [key] + [f"{v * scale:.4g}" for v in values]
+print(" ".join(rest))
+PY
 }
 
 echo "Baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
 echo
 echo "| truth | seed | photo particles | KS | volume W1/mean | solidity KS | roundness KS | window spread ratio | volume fraction |" \
-     "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline roundness KS | baseline window spread ratio | baseline volume fraction | photo fraction |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+     "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline roundness KS | baseline window spread ratio | baseline volume fraction |" \
+     "ideal volume W1/mean | ideal solidity KS | ideal roundness KS | ideal window spread ratio | photo fraction |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 index=0
 for truth in "${truths[@]}"; do
   name=${truth%%|*}

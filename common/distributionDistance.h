@@ -32,6 +32,14 @@ inline double ksStatistic(std::vector<double> a, std::vector<double> b) {
   return gap;
 }
 
+/// The two-sample KS statistic that samples of n and m values from one distribution exceed with
+/// probability 0.05 (asymptotic: 1.358 sqrt((n + m) / (n m))): a KS below it is no evidence that the
+/// distributions differ. 1 when either sample is empty.
+inline double ksCritical95(std::size_t n, std::size_t m) {
+  if (n == 0 || m == 0) return 1;
+  return std::min(1.0, 1.358 * std::sqrt(double(n + m) / (double(n) * double(m))));
+}
+
 /// Wasserstein-1 (earth mover's) distance; 0 when either sample is empty.
 inline double wasserstein1(std::vector<double> a, std::vector<double> b) {
   if (a.empty() || b.empty()) return 0;

@@ -42,6 +42,7 @@ nlohmann::json comparisonJson(const SectionComparison& c, const char* referenceN
           {"sections", summaryJson(c.solid)},
           {"solidity_ks", c.solidityKs},
           {"roundness_ks", c.roundnessKs},
+          {"shape_ks_critical_95", c.shapeKsCritical},
           {"window_spread_ratio", c.windowSpreadRatio},
           {"neighbour_distance_ks", c.neighbourKs},
           {"neighbour_distance_ratio", c.neighbourRatio}};
@@ -126,6 +127,7 @@ nlohmann::json runCompare(const CompareJob& job) {
       {"sections", {{"planes", sections.planes}, {"count", sections.areas.size()}, {"mean_area", mean(sections.areas)}}},
       {"photo_mean_area", photoMean},
       {"ks", ksStatistic(photoAreas, sections.areas)},
+      {"ks_critical_95", ksCritical95(photoAreas.size(), sections.areas.size())},
       {"wasserstein1_over_mean", photoMean > 0 ? wasserstein1(photoAreas, sections.areas) / photoMean : 0.0},
       {"shape_and_arrangement", comparisonJson(shapes, "photo")},
       {"window_side", sectionOptions.windowSide},

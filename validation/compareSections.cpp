@@ -37,6 +37,7 @@ SectionComparison compareSections(const SectionStatistics& reference, const Sect
   c.solid = summarize(solid, s, diameter);
   c.solidityKs = ksStatistic(r.solidity, s.solidity);
   c.roundnessKs = ksStatistic(r.roundness, s.roundness);
+  c.shapeKsCritical = ksCritical95(r.solidity.size(), s.solidity.size());
   c.windowSpreadRatio = c.reference.windowSpread > 0 ? c.solid.windowSpread / c.reference.windowSpread : 0;
   c.neighbourKs = ksStatistic(reference.neighbourDistances, solid.neighbourDistances);
   c.neighbourRatio = c.reference.neighbourDistance > 0 ? c.solid.neighbourDistance / c.reference.neighbourDistance : 0;

@@ -27,6 +27,7 @@ struct SectionSummary {
 struct SectionComparison {
   SectionSummary reference, solid;
   double solidityKs = 1, roundnessKs = 1;
+  double shapeKsCritical = 1;        ///< the KS two samples of these sizes from one distribution exceed 1 time in 20
   double windowSpreadRatio = 0;      ///< solid / reference: above 1 is more clustered
   double neighbourKs = 1;
   double neighbourRatio = 0;         ///< solid / reference mean nearest-neighbour distance

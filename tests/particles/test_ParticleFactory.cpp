@@ -1,6 +1,3 @@
-#include <chrono>
-#include <ctime>
-#include <cstdio>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -99,36 +96,6 @@ TEST(ParticleFactory, RejectsBadOptionsAndContourlessPhotos) {
   EXPECT_THROW(ParticleFactory(stats, {.contourVertices = 2}), InputError);
   EXPECT_THROW(ParticleFactory(test::statsOf({{{0, 0}, {5, 0}, {9, 0}}}), {}), InputError);
   EXPECT_THROW(ParticleFactory(ExemplarStats{}, {}), InputError);
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-double cpuMillisecondsSince(std::clock_t start) { return double(std::clock() - start) * 1000.0 / CLOCKS_PER_SEC; }
-
-// Figures for the report, not pass/fail: the machine is shared. CPU time covers all threads.
-TEST(ParticleFactoryTiming, PoolAndMake) {
-  const ExemplarStats stats = test::gravelStats(200, 1);
-  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-  const auto start = std::chrono::steady_clock::now();
-  const std::clock_t cpuStart = std::clock();
-  const ParticleFactory factory(stats, {.shapes = 64});
-  const double poolMs = millisecondsSince(start), poolCpuMs = cpuMillisecondsSince(cpuStart);
-  std::size_t triangles = 0;
-  for (const HullMesh& h : factory.hulls()) triangles += h.triangles.size();
-  std::printf("[timing] pool of 64 hulls (3 views, 48 vertices), 2 threads: %.0f ms wall, %.0f ms CPU, %.0f triangles "
-              "per hull\n",
-              poolMs, poolCpuMs, double(triangles) / 64);
-  for (const int side : {20, 60}) {
-    Rng rng(1);
-    const int count = side == 20 ? 2000 : 200;
-    std::size_t voxels = 0;
-    const std::clock_t makeStart = std::clock();
-    for (int i = 0; i < count; ++i) voxels += factory.make(side, side, side, rng).voxelCount();
-    std::printf("[timing] make %d^3: %.3f ms CPU each, %.0f%% of the box filled\n", side,
-                cpuMillisecondsSince(makeStart) / count, 100.0 * double(voxels) / count / (side * side * side));
-  }
 }
 
 } // namespace
