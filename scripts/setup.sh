@@ -7,7 +7,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools
-  libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
+  libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev
   libgtest-dev
 )

@@ -34,7 +34,7 @@ TEST(DistributionDistance, W1IsTheAreaBetweenTheCdfs) {
 // as a photo of ten candies against a solid's sections.
 TEST(DistributionDistance, KsCriticalValueIsExceededOneTimeInTwenty) {
   Rng rng(11);
-  for (const auto [n, m] : {std::pair<std::size_t, std::size_t>{10, 170}, {300, 2000}}) {
+  for (const auto& [n, m] : {std::pair<std::size_t, std::size_t>{10, 170}, {300, 2000}}) {
     int exceeded = 0;
     const int trials = 1000;
     for (int t = 0; t < trials; ++t)

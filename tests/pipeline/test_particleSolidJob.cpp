@@ -94,8 +94,11 @@ TEST_P(ParticleSolidOfExemplar, GivesWholeParticlesAtThePhotosAreaFraction) {
   EXPECT_EQ(pieces.size(), report["volume"]["particles"].get<std::size_t>());
   const std::set<std::int32_t> cut = idsOnFaces(volume);
   EXPECT_FALSE(cut.empty());
-  for (const auto& [id, count] : pieces)
-    if (!cut.count(id)) EXPECT_EQ(count, 1) << "particle " << id << " is in pieces";
+  for (const auto& [id, count] : pieces) {
+    if (!cut.count(id)) {
+      EXPECT_EQ(count, 1) << "particle " << id << " is in pieces";
+    }
+  }
 
   std::size_t occupied = 0;
   for (std::size_t i = 0; i < volume.particleId.size(); ++i) {
