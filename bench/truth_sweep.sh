@@ -87,15 +87,16 @@ measure_one() {
   for run in default baseline; do
     "$bin" compare "$dir/t/photo.png" "$dir/$run.vdb" --truth "$dir/t/truth.vdb" --report "$dir/$run.json" > /dev/null || return
   done
-  local scale ideal
-  scale=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["voxels_per_pixel"])' "$dir/default.json")
-  read -r -a ideal <<< "$(scaled_truth_options "$scale" "$@")"
+  local scale scaled ideal
+  scale=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["voxels_per_pixel"])' "$dir/default.json") || return
+  scaled=$(scaled_truth_options "$scale" "$@") || return
+  read -r -a ideal <<< "$scaled"
   "$bin" truth -o "$dir/ideal" --seed $((seed + 1000)) "${ideal[@]}" > /dev/null || return
   "$bin" compare "$dir/t/photo.png" "$dir/ideal/truth.vdb" --scale "$scale" --truth "$dir/t/truth.vdb" \
     --report "$dir/ideal.json" > /dev/null
 }
 
-# The truth options with lengths (radii, dims) times SCALE: the same material at the solid's voxels.
+# The truth options with lengths (radii, photo dims) times SCALE: the same material at the solid's voxels.
 scaled_truth_options() {
   python3 - "$@" <<'PY'
 import sys
@@ -112,7 +113,8 @@ while i < len(options):
         i += 1
 for key, values in lengths.items():
     if key == "--dims":
-        rest += [key] + [str(max(8, round(v * scale))) for v in values]
+        # The depth only has to hold the longest particle: kept, as rounding could leave it too thin.
+        rest += [key] + [str(max(8, round(v * scale))) for v in values[:2]] + [str(round(values[2]))]
     else:
         rest += [key] + [f"{v * scale:.4g}" for v in values]
 print(" ".join(rest))
