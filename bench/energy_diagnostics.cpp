@@ -15,9 +15,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "synthesis/ExemplarPyramid.h"
-#include "synthesis/SolidMeasures.h"
-#include "synthesis/Upsample.h"
+#include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/solidMeasures.h"
+#include "synthesis/detail/upsample.h"
 #include "synthesis/synthesizeSolid.h"
 
 using namespace solidtex;

@@ -2,7 +2,6 @@
 // colour histogram distance, time, peak memory. Usage:
 //   synthesis_bench [--size N] [--methods chen-wang,kopf] [--iterations I] [--threads T] [--seed S]
 //                   [--report-dir DIR] [--slices DIR] EXEMPLAR.png...
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -13,7 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "synthesis/ColorSpace.h"
+#include "common/srgb.h"
+#include "pipeline/jobSupport.h"
+#include "pipeline/synthesizeJob.h"
 #include "synthesis/synthesizeSolid.h"
 
 namespace {
@@ -38,7 +39,7 @@ void writeSlices(const solidtex::SolidVolume& v, const std::string& path) {
         if (a == 1) x = i, y = n / 2, z = j;
         const auto& c = v.color[v.dims.index(x, y, z)];
         cv::Vec3b& p = img.at<cv::Vec3b>(j, a * (n + 4) + i);
-        for (int k = 0; k < 3; ++k) p[2 - k] = cv::saturate_cast<uchar>(255.0f * solidtex::synthesis::linearToSrgbChannel(c[k]) + 0.5f);
+        for (int k = 0; k < 3; ++k) p[2 - k] = cv::saturate_cast<uchar>(255.0f * solidtex::linearToSrgb(c[k]) + 0.5f);
       }
   const int scale = std::max(1, 256 / n);
   cv::resize(img, img, cv::Size(), scale, scale, cv::INTER_NEAREST);
@@ -67,11 +68,11 @@ int main(int argc, char** argv) {
     } else if (a == "--report-dir") reportDir = next();
     else if (a == "--slices") slicesDir = next();
     else if (a == "--no-measure") base.measure = false;
-    else if (a == "--no-colour-histogram") base.colourHistogramMatching = false;
+    else if (a == "--no-color-histogram") base.colorHistogramMatching = false;
     else if (a == "--choice") {
       const std::string c = next();
-      using C = solidtex::synthesis::DiscreteSolveSettings::Choice;
-      base.choice = c == "average" ? C::NearestToAverage : c == "vote" ? C::LargestVote : C::ColourMode;
+      using C = solidtex::ProposalChoice;
+      base.choice = c == "average" ? C::NearestToAverage : c == "vote" ? C::LargestVote : C::ColorMode;
     } else if (a == "--bandwidth") base.modeBandwidth = std::stod(next());
     else if (a == "--reference-count") base.histogramReferenceCount = std::stod(next());
     else if (a == "--index-reference") base.indexReferenceCount = std::stod(next());
@@ -100,17 +101,15 @@ int main(int argc, char** argv) {
       solidtex::SynthesisOptions o = base;
       o.method = solidtex::parseMethod(m);
       o.exemplarName = name;
-      const auto t0 = std::chrono::steady_clock::now();
       const solidtex::SynthesisResult r = solidtex::synthesizeSolid(rgb, o);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const auto& q = r.report.contains("quality") ? r.report["quality"] : nlohmann::json::object();
-      auto get = [&](const char* k) { return q.contains(k) ? q[k].get<double>() : -1.0; };
+      const solidtex::SolidQuality q = r.statistics.quality.value_or(solidtex::SolidQuality{});
       std::printf("%-12s %-9s %5d %8.4f %8.4f %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(), m.c_str(), o.size,
-                  get("energyAxis"), get("energyOblique"), get("energyAxisSquared"), get("energyObliqueSquared"), get("positionCoverage"), get("positionFlatness"), get("colorHistogramDistance"),
-                  r.report["synthesisSeconds"].get<double>(), r.report["peakMemoryMiB"].get<double>());
+                  q.energyAxis, q.energyOblique, q.energyAxisSquared, q.energyObliqueSquared, q.positionCoverage, q.positionFlatness,
+                  q.colorHistogramDistance, r.statistics.synthesisSeconds, solidtex::peakMemoryMiB());
       std::fflush(stdout);
-      (void)seconds;
-      if (!reportDir.empty()) std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json") << r.report.dump(2);
+      if (!reportDir.empty())
+        std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json")
+            << solidtex::synthesisReport(o, r.statistics, rgb.cols, rgb.rows).dump(2);
       if (!slicesDir.empty()) writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
     }
   }

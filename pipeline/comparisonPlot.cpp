@@ -8,11 +8,11 @@
 namespace solidtex {
 namespace {
 
-const cv::Scalar kPhotoColour(0.12, 0.47, 0.71), kVolumeColour(1.0, 0.50, 0.05), kInk(0.15, 0.15, 0.15);
+const cv::Scalar kPhotoColor(0.12, 0.47, 0.71), kVolumeColor(1.0, 0.50, 0.05), kInk(0.15, 0.15, 0.15);
 constexpr int kPanelWidth = 520, kPanelHeight = 380, kMargin = 50;
 
-void text(cv::Mat& canvas, const std::string& s, cv::Point at, double size = 0.5, cv::Scalar colour = kInk) {
-  cv::putText(canvas, s, at, cv::FONT_HERSHEY_SIMPLEX, size, colour, 1, cv::LINE_AA);
+void text(cv::Mat& canvas, const std::string& s, cv::Point at, double size = 0.5, cv::Scalar color = kInk) {
+  cv::putText(canvas, s, at, cv::FONT_HERSHEY_SIMPLEX, size, color, 1, cv::LINE_AA);
 }
 
 void axes(cv::Mat& panel, const std::string& title, const std::string& xLabel) {
@@ -34,19 +34,19 @@ cv::Mat histogramPanel(const ComparisonData& data) {
     const int h1 = int(plotHeight * data.areaHistogram[std::size_t(b)] / std::max(top, 1e-9));
     const int h2 = int(plotHeight * data.volumeHistogram[std::size_t(b)] / std::max(top, 1e-9));
     const int x = x0 + b * slot;
-    cv::rectangle(panel, cv::Rect(x, y0 - h1, bar, h1), kPhotoColour, cv::FILLED);
-    cv::rectangle(panel, cv::Rect(x + bar + 2, y0 - h2, bar, h2), kVolumeColour, cv::FILLED);
+    cv::rectangle(panel, cv::Rect(x, y0 - h1, bar, h1), kPhotoColor, cv::FILLED);
+    cv::rectangle(panel, cv::Rect(x + bar + 2, y0 - h2, bar, h2), kVolumeColor, cv::FILLED);
     text(panel, std::to_string(b + 1), {x + bar - 4, y0 + 16}, 0.4);
   }
   char label[32];
   std::snprintf(label, sizeof label, "%.2f", top);
   text(panel, label, {6, 54}, 0.4);
-  text(panel, "photo areas", {kPanelWidth - 160, 50}, 0.45, kPhotoColour);
-  text(panel, "solid volumes", {kPanelWidth - 160, 70}, 0.45, kVolumeColour);
+  text(panel, "photo areas", {kPanelWidth - 160, 50}, 0.45, kPhotoColor);
+  text(panel, "solid volumes", {kPanelWidth - 160, 70}, 0.45, kVolumeColor);
   return panel;
 }
 
-void drawCdf(cv::Mat& panel, std::vector<double> values, double minX, double maxX, const cv::Scalar& colour) {
+void drawCdf(cv::Mat& panel, std::vector<double> values, double minX, double maxX, const cv::Scalar& color) {
   if (values.empty() || !(maxX > minX)) return;
   std::sort(values.begin(), values.end());
   const int x0 = kMargin, y0 = kPanelHeight - kMargin, w = kPanelWidth - x0 - 20, h = y0 - 50;
@@ -54,8 +54,8 @@ void drawCdf(cv::Mat& panel, std::vector<double> values, double minX, double max
   for (std::size_t i = 0; i < values.size(); ++i) {
     const int x = x0 + int(w * (std::clamp(values[i], minX, maxX) - minX) / (maxX - minX));
     const int y = y0 - int(h * double(i + 1) / double(values.size()));
-    cv::line(panel, previous, {x, previous.y}, colour, 2, cv::LINE_AA);
-    cv::line(panel, {x, previous.y}, {x, y}, colour, 2, cv::LINE_AA);
+    cv::line(panel, previous, {x, previous.y}, color, 2, cv::LINE_AA);
+    cv::line(panel, {x, previous.y}, {x, y}, color, 2, cv::LINE_AA);
     previous = {x, y};
   }
 }
@@ -66,8 +66,8 @@ cv::Mat cdfPanel(const std::string& title, const std::string& xLabel, const std:
                  int linesX) {
   cv::Mat panel(kPanelHeight, kPanelWidth, CV_32FC3, cv::Scalar(1, 1, 1));
   axes(panel, title, xLabel);
-  drawCdf(panel, photo, minX, maxX, kPhotoColour);
-  drawCdf(panel, sections, minX, maxX, kVolumeColour);
+  drawCdf(panel, photo, minX, maxX, kPhotoColor);
+  drawCdf(panel, sections, minX, maxX, kVolumeColor);
   char label[32];
   std::snprintf(label, sizeof label, "%.3g", minX);
   text(panel, label, {kMargin - 10, kPanelHeight - kMargin + 16}, 0.4);
@@ -75,8 +75,8 @@ cv::Mat cdfPanel(const std::string& title, const std::string& xLabel, const std:
   text(panel, label, {kPanelWidth - 60, kPanelHeight - kMargin + 16}, 0.4);
   for (std::size_t i = 0; i < lines.size(); ++i)
     text(panel, lines[i], {linesX, kPanelHeight - kMargin - 20 - 20 * int(lines.size() - 1 - i)}, 0.45);
-  text(panel, "photo", {kPanelWidth - 160, 50}, 0.45, kPhotoColour);
-  text(panel, "sections of the solid", {kPanelWidth - 160, 70}, 0.45, kVolumeColour);
+  text(panel, "photo", {kPanelWidth - 160, 50}, 0.45, kPhotoColor);
+  text(panel, "sections of the solid", {kPanelWidth - 160, 70}, 0.45, kVolumeColor);
   return panel;
 }
 

@@ -9,6 +9,7 @@
 
 #include <tbb/info.h>
 
+#include "common/secondsSince.h"
 #include "common/Error.h"
 
 namespace solidtex {
@@ -50,7 +51,7 @@ void PhaseTimer::start(const std::string& name) {
 
 nlohmann::json PhaseTimer::finish() {
   start("");
-  phases_["total"] = std::chrono::duration<double>(Clock::now() - begin_).count();
+  phases_["total"] = secondsSince(begin_);
   return phases_;
 }
 

@@ -175,8 +175,14 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   field.reset();  // its memory goes to the colour and the .vdb's grids
   progress.done();
 
-  timer.start("colour");
-  SolidVolume volume = paintParticleSolid(stats, placement, scale, job.seed);
+  timer.start("color");
+  std::vector<ParticlePaint> paints;
+  paints.reserve(placement.particles.size());
+  for (const PlacedParticle& placed : placement.particles)
+    paints.push_back({placed.source,
+                      {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5, placed.origin.z + placed.box.z * 0.5},
+                      placed.voxelsPerPixel});
+  SolidVolume volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   timer.start("write");

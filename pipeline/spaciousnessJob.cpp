@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/secondsSince.h"
 #include "common/Error.h"
 #include "particles/ParticleFactory.h"
 #include "pipeline/jobSupport.h"
@@ -17,10 +18,6 @@ namespace solidtex {
 namespace {
 
 constexpr PlacerKind kKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay};
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Each particle's voxels, in id order: the order they were placed in.
 std::vector<std::vector<Voxel>> voxelsPerParticle(const PlacementResult& placement) {

@@ -14,6 +14,62 @@
 
 namespace solidtex {
 
+nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats, int exemplarWidth, int exemplarHeight) {
+  nlohmann::json report = {{"method", methodName(o.method)},
+                           {"size", o.size},
+                           {"levels", o.levels},
+                           {"neighborhoods", stats.neighborhoods},
+                           {"k", o.k},
+                           {"iterations", o.iterations},
+                           {"pca_dims", o.pcaDims},
+                           {"seed", o.seed},
+                           {"control", bool(o.control)},
+                           {"exemplar", {{"name", o.exemplarName}, {"width", exemplarWidth}, {"height", exemplarHeight}}}};
+  if (o.method == Method::ChenWang) report["color_histogram_matching"] = o.colorHistogramMatching;
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t l = 0; l < stats.levels.size(); ++l) {
+    const LevelStatistics& level = stats.levels[l];
+    nlohmann::json iterations = nlohmann::json::array();
+    for (std::size_t i = 0; i < level.iterations.size(); ++i) {
+      const IterationStatistics& step = level.iterations[i];
+      nlohmann::json entry = {{"iteration", i + 1}, {"energy", step.energy}, {"search_seconds", step.searchSeconds}, {"solve_seconds", step.solveSeconds}};
+      if (step.positionCoverage) entry["position_coverage"] = *step.positionCoverage;
+      iterations.push_back(entry);
+    }
+    levels.push_back({{"level", l + 1},
+                      {"volume_size", level.volumeSize},
+                      {"exemplar_width", level.exemplarWidth},
+                      {"exemplar_height", level.exemplarHeight},
+                      {"neighborhood", level.neighborhood},
+                      {"exemplar_neighborhoods", level.exemplarNeighborhoods},
+                      {"pca_dims", level.pcaDims},
+                      {"pca_kept_variance", level.pcaKeptVariance},
+                      {"search", searchName(level.search)},
+                      {"analysis_seconds", level.analysisSeconds},
+                      {"iterations", iterations},
+                      {"seconds", level.seconds}});
+  }
+  report["level_reports"] = levels;
+  report["synthesis_seconds"] = stats.synthesisSeconds;
+  if (const auto& q = stats.quality) {
+    report["quality"] = {{"energy_axis", q->energyAxis},
+                         {"energy_oblique", q->energyOblique},
+                         {"energy_exponent", kEnergyExponent},
+                         {"energy_axis_squared", q->energyAxisSquared},
+                         {"energy_oblique_squared", q->energyObliqueSquared},
+                         {"energy_neighborhood", q->energyNeighborhood},
+                         {"position_coverage", q->positionCoverage},
+                         {"position_flatness", q->positionFlatness},
+                         {"position_variation", q->positionVariation},
+                         {"position_source", o.method == Method::ChenWang ? "copied pixel" : "dominant proposal"},
+                         {"index_coverage", q->indexCoverage},
+                         {"color_histogram_distance", q->colorHistogramDistance},
+                         {"seconds", q->seconds}};
+  }
+  report["seconds"] = stats.seconds;
+  return report;
+}
+
 nlohmann::json runSynthesize(const SynthesizeJob& job) {
   namespace fs = std::filesystem;
   if (fs::path(job.output).extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");
@@ -33,7 +89,7 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   result.volume.metadata["command_line"] = job.commandLine;
   result.volume.metadata["seed"] = std::to_string(options.seed);
   result.volume.metadata["exemplar"] = options.exemplarName;
-  nlohmann::json report = result.report;
+  nlohmann::json report = synthesisReport(options, result.statistics, exemplar.cols, exemplar.rows);
   report["solidtex_version"] = SOLIDTEX_VERSION;
   report["command"] = "synthesize";
   report["outputs"] = {{"vdb", job.output}};

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "synthesis/SynthesisOptions.h"
+#include "synthesis/synthesizeSolid.h"
 
 namespace solidtex {
 
@@ -19,6 +19,10 @@ struct SynthesizeJob {
   std::string commandLine;
   bool progress = true;                ///< a progress line on stderr
 };
+
+/// The report's settings and statistics of a synthesis (snake_case keys, as every report).
+nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics, int exemplarWidth,
+                               int exemplarHeight);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesize(const SynthesizeJob& job);

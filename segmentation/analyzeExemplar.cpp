@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "common/Error.h"
-#include "segmentation/detail/colour.h"
+#include "segmentation/detail/color.h"
 #include "segmentation/detail/fillHoles.h"
 #include "segmentation/detail/loadMask.h"
 #include "segmentation/detail/measureParticles.h"

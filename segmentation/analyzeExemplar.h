@@ -16,11 +16,6 @@ struct SegmentationOptions {
   double minArea = -1;                 ///< pixels; < 0 means max(8, image area / 10000)
 };
 
-/// Loads any image OpenImageIO reads (PNG, JPEG, TIFF, EXR; 8/16-bit/float; grey/RGB/RGBA) as
-/// CV_32FC3 sRGB in [0,1], R,G,B order. Refuses headers larger than 20000x20000 before decoding.
-/// Throws InputError naming the problem.
-cv::Mat loadPhoto(const std::string& path);
-
 /// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Automatic separation:
 /// Otsu on the clearest of L*, a*, b*, chroma; the less compact class is the background; then the
 /// colour distance from the background (lighting evened out), with edges deciding the unclear
@@ -30,10 +25,5 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
 
 /// loadPhoto + analyzeExemplar.
 ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions& options);
-
-/// sRGB in [0,1] to linear, per channel.
-float srgbToLinear(float c);
-/// Linear in [0,1] to sRGB, per channel.
-float linearToSrgb(float c);
 
 } // namespace solidtex

@@ -12,7 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "common/Error.h"
-#include "segmentation/detail/colour.h"
+#include "segmentation/detail/color.h"
 
 namespace solidtex {
 namespace {

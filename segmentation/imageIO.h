@@ -15,7 +15,6 @@ inline constexpr int kMinPhotoSide = 8;
 /// to sRGB; values are clamped to [0,1]). Throws InputError, naming the file and the problem,
 /// for a missing or unreadable file, a truncated image, or a size outside
 /// [kMinPhotoSide, kMaxPhotoSide] (checked on the header, before any pixel is decoded).
-/// Also declared in analyzeExemplar.h.
 cv::Mat loadPhoto(const std::string& path);
 
 /// Writes a CV_32FC3 sRGB [0,1] or CV_8UC3 image (R,G,B order), or a one-channel CV_32F [0,1] /

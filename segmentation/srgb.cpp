@@ -4,22 +4,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "segmentation/analyzeExemplar.h"
-#include "segmentation/detail/colour.h"
+#include "common/srgb.h"
+#include "segmentation/detail/color.h"
 
 namespace solidtex {
-
-// IEC 61966-2-1 transfer functions; inputs are clamped because photos may carry out-of-range
-// values (float EXR highlights, negative noise) that have no sRGB meaning.
-float srgbToLinear(float c) {
-  c = std::clamp(c, 0.0f, 1.0f);
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-float linearToSrgb(float c) {
-  c = std::clamp(c, 0.0f, 1.0f);
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 namespace detail {
 namespace {

@@ -5,12 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
-
-#include "synthesis/ChenWangSolver.h"
-#include "synthesis/SolidMeasures.h"
-#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 
@@ -25,6 +20,26 @@ std::string methodName(Method method);
 /// Parses "chen-wang" / "kopf"; throws InputError otherwise.
 Method parseMethod(const std::string& name);
 
+/// Kopf et al.'s r (Chen and Wang's gamma): the slice energy sums ||s - e||^r (eq. 1), which the
+/// IRLS weights ||s - e||^(r-2) minimise; the energy the report measures uses the same exponent.
+inline constexpr double kEnergyExponent = 0.8;
+
+/// How chen-wang's discrete solver picks the exemplar pixel a voxel copies among the proposals.
+enum class ProposalChoice {
+  NearestToAverage,  ///< the proposal nearest to their weighted average (Han et al., as the paper says)
+  LargestVote,       ///< the pixel with the largest summed weight, so re-weighting acts on the choice
+  ColorMode,         ///< the proposal whose colour gathers the largest weight in a Gaussian colour kernel
+};
+
+/// How the quality of a solid texture is measured (the report's `quality`).
+struct SliceMeasureOptions {
+  int neighborhood = 8;        ///< side of the compared square neighbourhoods
+  int axisSamples = 1536;      ///< slice neighbourhoods sampled on axis-aligned slices (a third per axis)
+  int obliqueSamples = 1536;   ///< slice neighbourhoods sampled on random oblique planes
+  std::uint64_t seed = 12345;  ///< where the samples lie
+  int histogramBins = 8;       ///< per channel, for the joint colour histogram
+};
+
 /// Options of synthesizeSolid; defaults follow the paper and the `solidtex synthesize` command.
 struct SynthesisOptions {
   Method method = Method::ChenWang;
@@ -37,6 +52,7 @@ struct SynthesisOptions {
   std::optional<cv::Mat> control;          ///< greyscale map the exemplar's size: theta(p), phi(p) (brighter = more)
   std::uint64_t seed = 1;
   int threads = 0;                         ///< worker threads; 0 = all cores. Output does not depend on it.
+  std::string exemplarName;                ///< stored in the volume's metadata
   std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
 
   // Finer controls (rarely changed).
@@ -45,34 +61,24 @@ struct SynthesisOptions {
   int minSeparation = 2;      ///< similarity sets skip neighbourhoods within this many pixels
   /// A level is searched exhaustively when it has fewer exemplar neighbourhoods than this and
   /// centres x neighbourhoods (candidate distances per iteration) is at most exhaustiveBudget;
-  /// otherwise by k-coherence. Exhaustive search matters at the coarsest level (a random volume
-  /// gives k-coherence nothing to build on) and stays within the budget there up to 256^3; at
-  /// 128^3 the second level (196k centres x 729 to 1849 neighbourhoods for terra and burlap) cost
-  /// burlap 15 s exhaustively, 1.3 s by k-coherence, for the same energy and coverage.
+  /// otherwise by k-coherence. Exhaustive search matters at the coarsest level, where a random
+  /// volume gives k-coherence nothing to build on; at finer levels k-coherence finds as good
+  /// matches for a tenth of the time.
   int exhaustiveBelow = 2048;
   double exhaustiveBudget = 128e6;
-  double irlsExponent = 0.8;  ///< r of the IRLS weights ||s - e||^(r-2)
+  double irlsExponent = kEnergyExponent;  ///< r of the IRLS weights ||s - e||^(r-2)
   /// Eq. 4's counts H and theta are scaled as if theta (voxels per exemplar pixel) were this, so the
   /// re-weighting is equally strong at every level and size; <= 0 = the paper's plain counts.
   double histogramReferenceCount = 512;
   double indexReferenceCount = 128;  ///< the same for eq. 6 (slice neighbourhoods per exemplar neighbourhood)
-  /// How chen-wang's discrete solver picks the copied proposal (see DiscreteSolveSettings).
-  synthesis::DiscreteSolveSettings::Choice choice = synthesis::DiscreteSolveSettings::Choice::ColourMode;
-  double modeBandwidth = 0.01;
+  ProposalChoice choice = ProposalChoice::ColorMode;
+  double modeBandwidth = 0.01;  ///< ColorMode kernel: exp(-||a - b||^2 / bandwidth), sRGB units
   int histogramBins = 16;     ///< per channel, Kopf's colour histograms (eq. 3)
   /// chen-wang re-weights with eq. 3 (colour histograms) besides eq. 4: without it a minority
   /// colour class erodes (two-colour discs: 0.10 instead of 0.30), see DiscreteHistograms.
-  bool colourHistogramMatching = true;
-  bool measure = true;        ///< add slice energies and histogram statistics to the report
-  synthesis::MeasureOptions measureOptions;
-  std::string exemplarName;   ///< stored in the volume's metadata
-};
-
-/// The synthesised volume and its report (JSON: settings, energy per level and iteration, time per
-/// level, quality figures, peak memory).
-struct SynthesisResult {
-  SolidVolume volume;    ///< dims size^3, linear RGB colour, density empty, sourcePosition for chen-wang
-  nlohmann::json report;
+  bool colorHistogramMatching = true;
+  bool measure = true;        ///< measure slice energies and histogram statistics (SynthesisStatistics::quality)
+  SliceMeasureOptions measureOptions;
 };
 
 } // namespace solidtex

@@ -1,7 +1,5 @@
 #include "synthesis/synthesizeSolid.h"
 
-#include <chrono>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -9,20 +7,31 @@
 
 #include "common/Error.h"
 #include "common/Random.h"
-#include "synthesis/ColorSpace.h"
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/ExemplarPyramid.h"
-#include "synthesis/Histograms.h"
-#include "synthesis/KdTree.h"
-#include "synthesis/KopfSolver.h"
-#include "synthesis/SimilaritySets.h"
-#include "synthesis/SliceMatches.h"
-#include "synthesis/SolidMeasures.h"
-#include "synthesis/Upsample.h"
+#include "common/secondsSince.h"
+#include "common/srgb.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/discreteSolve.h"
+#include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/histograms.h"
+#include "synthesis/detail/KdTree.h"
+#include "synthesis/detail/weightedAverageSolve.h"
+#include "synthesis/detail/SimilaritySets.h"
+#include "synthesis/detail/SliceMatches.h"
+#include "synthesis/detail/solidMeasures.h"
+#include "synthesis/detail/upsample.h"
 
 namespace solidtex {
 
 using namespace synthesis;
+
+std::string searchName(NeighborhoodSearch search) {
+  switch (search) {
+    case NeighborhoodSearch::Exhaustive: return "exhaustive";
+    case NeighborhoodSearch::KCoherence: return "k-coherence";
+    case NeighborhoodSearch::KdTree: return "kd-tree";
+  }
+  return "";
+}
 
 std::string methodName(Method method) { return method == Method::ChenWang ? "chen-wang" : "kopf"; }
 
@@ -35,17 +44,6 @@ Method parseMethod(const std::string& name) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-/// Peak resident memory of the process in MiB (Linux VmHWM), 0 when unknown.
-double peakMemoryMiB() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0;
-}
 
 std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
@@ -99,164 +97,164 @@ std::vector<float> controlAtCentres(const ExemplarNeighborhoods& en, const std::
   return out;
 }
 
-} // namespace
 
-SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& o) {
-  const auto start = Clock::now();
-  const std::vector<int> neighborhoods = validate(exemplarSrgb, o);
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (o.threads > 0) threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
-  auto progress = [&](const std::string& line) {
-    if (o.progress) o.progress(line);
-  };
-  const bool chenWang = o.method == Method::ChenWang;
-
-  const RgbImage finest = toRgbImage(exemplarSrgb);
-  const std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
-  const ExemplarPyramid pyramid = buildExemplarPyramid(finest, o.levels, control);
-
-  nlohmann::json report;
-  report["method"] = methodName(o.method);
-  report["size"] = o.size;
-  report["levels"] = o.levels;
-  report["neighborhoods"] = neighborhoods;
-  report["k"] = o.k;
-  report["iterations"] = o.iterations;
-  report["pcaDims"] = o.pcaDims;
-  if (chenWang) report["colourHistogramMatching"] = o.colourHistogramMatching;
-  report["seed"] = o.seed;
-  report["control"] = bool(o.control);
-  report["exemplar"] = {{"name", o.exemplarName}, {"width", finest.width}, {"height", finest.height}};
-  nlohmann::json levelReports = nlohmann::json::array();
-
+/// The state carried from one level to the next.
+struct PyramidState {
   WorkVolume volume;
-  std::vector<std::int64_t> indexHistogram;
-  int indexCount = 0;
-  for (int l = 0; l < o.levels; ++l) {
-    const auto levelStart = Clock::now();
-    const RgbImage& ex = pyramid.levels[l];
-    const int N = o.size >> (o.levels - 1 - l);
-    const NeighborhoodShape shape{neighborhoods[l]};
-    const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
-    const SliceCentreGrid centres{N, o.sparseStep};
-    const bool exhaustive =
-        chenWang && en.count() < o.exhaustiveBelow && double(centres.count()) * en.count() <= o.exhaustiveBudget;
-    SimilaritySets sets;
-    std::unique_ptr<KdTree> tree;
-    if (chenWang && !exhaustive) sets = buildSimilaritySets(en, o.k, o.minSeparation);
-    if (!chenWang) tree = std::make_unique<KdTree>(en.reduced.data(), en.count(), en.reducedDims());
-    const double analysisSeconds = secondsSince(levelStart);
+  std::vector<std::int64_t> indexHistogram;  ///< slice neighbourhoods matched to each exemplar one
+};
 
-    if (l == 0) volume = randomVolume(N, ex, deriveSeed(o.seed, 0));
-    else if (chenWang) volume = upsampleSources(volume, pyramid.levels[l - 1].width, ex);
-    else volume = upsampleColors(volume);
-
-    SliceMatches matches(centres);
-    const std::vector<double> theta = expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
-    const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()), controlAtCentres(en, pyramid.control[l]));
-    std::vector<std::int64_t> positionHistogram;
-    if (chenWang) positionHistogram = positionHistogramOf(volume.source, ex.pixelCount());
-    const ChannelHistograms exemplarHistogram = channelHistograms(ex.data.data(), std::size_t(ex.pixelCount()), o.histogramBins);
-    ChannelHistograms volumeHistogram = channelHistograms(volume.rgb.data(), volume.count(), o.histogramBins);
-    indexHistogram.assign(en.count(), 0);
-    indexCount = en.count();
-
-    SearchSettings search;
-    search.sets = chenWang && !exhaustive ? &sets : nullptr;
-    search.tree = tree.get();
-    search.exhaustive = exhaustive;
-    search.coherenceRadius = o.coherenceRadius;
-    search.phi = chenWang ? &phi : nullptr;
-    search.histogramScale = std::max(1.0, o.indexReferenceCount * en.count() / double(matches.grid.count()));
-
-    nlohmann::json iterations = nlohmann::json::array();
-    for (int it = 0; it < o.iterations; ++it) {
-      const auto t0 = Clock::now();
-      const double energy = searchPhase(volume, en, search, matches, indexHistogram);
-      const double searchSeconds = secondsSince(t0);
-      const auto t1 = Clock::now();
-      if (chenWang) {
-        DiscreteSolveSettings solve;
-        solve.irlsExponent = o.irlsExponent;
-        solve.choice = o.choice;
-        solve.modeBandwidth = o.modeBandwidth;
-        const double meanTheta = double(volume.count()) / ex.pixelCount();
-        solve.histogramScale = o.histogramReferenceCount > 0 ? o.histogramReferenceCount / meanTheta : 1.0;
-        DiscreteHistograms histograms{&theta, &positionHistogram};
-        if (o.colourHistogramMatching) {
-          histograms.exemplarColours = &exemplarHistogram;
-          histograms.volumeColours = &volumeHistogram;
-        }
-        discreteSolve(volume, ex, en, matches, histograms, solve);
-      }
-      else weightedAverageSolve(volume, ex, en, matches, exemplarHistogram, volumeHistogram, {o.irlsExponent});
-      const double solveSeconds = secondsSince(t1);
-      nlohmann::json entry = {{"iteration", it + 1}, {"energy", energy}, {"searchSeconds", searchSeconds}, {"solveSeconds", solveSeconds}};
-      if (chenWang) {
-        std::int64_t used = 0;
-        for (std::int64_t h : positionHistogram) used += h > 0;
-        entry["positionCoverage"] = double(used) / double(positionHistogram.size());
-      }
-      iterations.push_back(entry);
-      std::ostringstream line;
-      line << methodName(o.method) << " level " << l + 1 << "/" << o.levels << " (" << N << "^3) iteration " << it + 1 << "/" << o.iterations
-           << " energy " << energy;
-      progress(line.str());
-    }
-    levelReports.push_back({{"level", l + 1},
-                            {"volumeSize", N},
-                            {"exemplarWidth", ex.width},
-                            {"exemplarHeight", ex.height},
-                            {"neighborhood", shape.size},
-                            {"exemplarNeighborhoods", en.count()},
-                            {"pcaDims", en.reducedDims()},
-                            {"pcaKeptVariance", en.pca.keptVariance()},
-                            {"search", exhaustive ? "exhaustive" : (chenWang ? "k-coherence" : "kd-tree")},
-                            {"analysisSeconds", analysisSeconds},
-                            {"iterations", iterations},
-                            {"seconds", secondsSince(levelStart)}});
+/// Chen-wang's discrete solve of one iteration, with its histograms.
+void discreteStep(WorkVolume& volume, const RgbImage& ex, const ExemplarNeighborhoods& en, const SliceMatches& matches,
+                  const std::vector<double>& theta, std::vector<std::int64_t>& positionHistogram,
+                  const ChannelHistograms& exemplarHistogram, ChannelHistograms& volumeHistogram, const SynthesisOptions& o) {
+  DiscreteSolveSettings solve;
+  solve.irlsExponent = o.irlsExponent;
+  solve.choice = o.choice;
+  solve.modeBandwidth = o.modeBandwidth;
+  const double meanTheta = double(volume.count()) / ex.pixelCount();
+  solve.histogramScale = o.histogramReferenceCount > 0 ? o.histogramReferenceCount / meanTheta : 1.0;
+  DiscreteHistograms histograms{&theta, &positionHistogram};
+  if (o.colorHistogramMatching) {
+    histograms.exemplarColors = &exemplarHistogram;
+    histograms.volumeColors = &volumeHistogram;
   }
-  report["levelReports"] = levelReports;
+  discreteSolve(volume, ex, en, matches, histograms, solve);
+}
 
-  SynthesisResult result;
-  SolidVolume& out = result.volume;
+/// Level l: its start volume (random or upsampled from state), then search and solve iterations.
+LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neighborhood, const SynthesisOptions& o,
+                                PyramidState& state) {
+  const auto levelStart = Clock::now();
+  const bool chenWang = o.method == Method::ChenWang;
+  const RgbImage& ex = pyramid.levels[l];
+  const int N = o.size >> (o.levels - 1 - l);
+  const NeighborhoodShape shape{neighborhood};
+  const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
+  const SliceCentreGrid centres{N, o.sparseStep};
+  const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow && double(centres.count()) * en.count() <= o.exhaustiveBudget;
+  SimilaritySets sets;
+  std::unique_ptr<KdTree> tree;
+  if (chenWang && !exhaustive) sets = buildSimilaritySets(en, o.k, o.minSeparation);
+  if (!chenWang) tree = std::make_unique<KdTree>(en.reduced.data(), en.count(), en.reducedDims());
+
+  LevelStatistics stats;
+  stats.volumeSize = N;
+  stats.exemplarWidth = ex.width;
+  stats.exemplarHeight = ex.height;
+  stats.neighborhood = shape.size;
+  stats.exemplarNeighborhoods = en.count();
+  stats.pcaDims = en.reducedDims();
+  stats.pcaKeptVariance = en.pca.keptVariance();
+  stats.search = exhaustive ? NeighborhoodSearch::Exhaustive : chenWang ? NeighborhoodSearch::KCoherence : NeighborhoodSearch::KdTree;
+  stats.analysisSeconds = secondsSince(levelStart);
+
+  WorkVolume& volume = state.volume;
+  if (l == 0) volume = randomVolume(N, ex, deriveSeed(o.seed, 0));
+  else if (chenWang) volume = upsampleSources(volume, pyramid.levels[l - 1].width, ex);
+  else volume = upsampleColors(volume);
+
+  SliceMatches matches(centres);
+  const std::vector<double> theta = expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
+  const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()), controlAtCentres(en, pyramid.control[l]));
+  std::vector<std::int64_t> positionHistogram;
+  if (chenWang) positionHistogram = positionHistogramOf(volume.source, ex.pixelCount());
+  const ChannelHistograms exemplarHistogram = channelHistograms(ex.data.data(), std::size_t(ex.pixelCount()), o.histogramBins);
+  ChannelHistograms volumeHistogram = channelHistograms(volume.rgb.data(), volume.count(), o.histogramBins);
+  state.indexHistogram.assign(en.count(), 0);
+
+  SearchSettings search;
+  search.sets = chenWang && !exhaustive ? &sets : nullptr;
+  search.tree = tree.get();
+  search.exhaustive = exhaustive;
+  search.coherenceRadius = o.coherenceRadius;
+  search.phi = chenWang ? &phi : nullptr;
+  search.histogramScale = std::max(1.0, o.indexReferenceCount * en.count() / double(matches.grid.count()));
+
+  for (int it = 0; it < o.iterations; ++it) {
+    IterationStatistics step;
+    const auto t0 = Clock::now();
+    step.energy = searchPhase(volume, en, search, matches, state.indexHistogram);
+    step.searchSeconds = secondsSince(t0);
+    const auto t1 = Clock::now();
+    if (chenWang) discreteStep(volume, ex, en, matches, theta, positionHistogram, exemplarHistogram, volumeHistogram, o);
+    else weightedAverageSolve(volume, ex, en, matches, exemplarHistogram, volumeHistogram, {o.irlsExponent});
+    step.solveSeconds = secondsSince(t1);
+    if (chenWang) {
+      std::int64_t used = 0;
+      for (std::int64_t h : positionHistogram) used += h > 0;
+      step.positionCoverage = double(used) / double(positionHistogram.size());
+    }
+    stats.iterations.push_back(step);
+    if (o.progress) {
+      std::ostringstream line;
+      line << methodName(o.method) << " level " << l + 1 << "/" << o.levels << " (" << N << "^3) iteration " << it + 1 << "/"
+           << o.iterations << " energy " << step.energy;
+      o.progress(line.str());
+    }
+  }
+  stats.seconds = secondsSince(levelStart);
+  return stats;
+}
+
+/// The finished sRGB volume as a SolidVolume: linear colours, and the copied exemplar pixel for chen-wang.
+SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, int exemplarWidth) {
+  SolidVolume out;
   out.dims = {o.size, o.size, o.size};
   out.color.resize(volume.count());
   for (std::size_t i = 0; i < volume.count(); ++i)
-    for (int c = 0; c < 3; ++c) out.color[i][c] = srgbToLinearChannel(volume.rgb[3 * i + c]);
-  if (chenWang) {
+    for (int c = 0; c < 3; ++c) out.color[i][c] = srgbToLinear(volume.rgb[3 * i + c]);
+  if (o.method == Method::ChenWang) {
     out.sourcePosition.resize(volume.count());
     for (std::size_t i = 0; i < volume.count(); ++i)
-      out.sourcePosition[i] = {float(volume.source[i] % finest.width), float(volume.source[i] / finest.width)};
+      out.sourcePosition[i] = {float(volume.source[i] % exemplarWidth), float(volume.source[i] / exemplarWidth)};
   }
   out.metadata["method"] = methodName(o.method);
   out.metadata["seed"] = std::to_string(o.seed);
   if (!o.exemplarName.empty()) out.metadata["exemplar"] = o.exemplarName;
-  report["synthesisSeconds"] = secondsSince(start);
+  return out;
+}
 
-  if (o.measure) {
-    const auto t = Clock::now();
-    const SliceEnergy energy = sliceEnergy(volume, finest, o.measureOptions);
-    const PositionHistogramStats positions = positionHistogramStats(volume.source, finest.pixelCount());
-    std::int64_t usedIndices = 0;
-    for (std::int64_t h : indexHistogram) usedIndices += h > 0;
-    report["quality"] = {{"energyAxis", energy.axis},
-                         {"energyOblique", energy.oblique},
-                         {"energyExponent", kSliceEnergyExponent},
-                         {"energyAxisSquared", energy.axisSquared},
-                         {"energyObliqueSquared", energy.obliqueSquared},
-                         {"energyNeighborhood", std::min({o.measureOptions.neighborhood, finest.width, finest.height})},
-                         {"positionCoverage", positions.coverage},
-                         {"positionFlatness", positions.flatness},
-                         {"positionVariation", positions.variation},
-                         {"positionSource", chenWang ? "copied pixel" : "dominant proposal"},
-                         {"indexCoverage", indexCount ? double(usedIndices) / indexCount : 0.0},
-                         {"colorHistogramDistance", colorHistogramDistance(volume.rgb.data(), volume.count(), finest, o.measureOptions.histogramBins)},
-                         {"seconds", secondsSince(t)}};
-  }
-  report["seconds"] = secondsSince(start);
-  report["peakMemoryMiB"] = peakMemoryMiB();
-  result.report = std::move(report);
+SolidQuality measureQuality(const PyramidState& state, const RgbImage& finest, const SliceMeasureOptions& options) {
+  const auto start = Clock::now();
+  const SliceEnergy energy = sliceEnergy(state.volume, finest, options);
+  const PositionHistogramStats positions = positionHistogramStats(state.volume.source, finest.pixelCount());
+  std::int64_t usedIndices = 0;
+  for (std::int64_t h : state.indexHistogram) usedIndices += h > 0;
+  SolidQuality q;
+  q.energyAxis = energy.axis;
+  q.energyOblique = energy.oblique;
+  q.energyAxisSquared = energy.axisSquared;
+  q.energyObliqueSquared = energy.obliqueSquared;
+  q.energyNeighborhood = std::min({options.neighborhood, finest.width, finest.height});
+  q.positionCoverage = positions.coverage;
+  q.positionFlatness = positions.flatness;
+  q.positionVariation = positions.variation;
+  q.indexCoverage = state.indexHistogram.empty() ? 0.0 : double(usedIndices) / double(state.indexHistogram.size());
+  q.colorHistogramDistance = colorHistogramDistance(state.volume.rgb.data(), state.volume.count(), finest, options.histogramBins);
+  q.seconds = secondsSince(start);
+  return q;
+}
+
+} // namespace
+
+SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& o) {
+  const auto start = Clock::now();
+  SynthesisResult result;
+  SynthesisStatistics& stats = result.statistics;
+  stats.neighborhoods = validate(exemplarSrgb, o);
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (o.threads > 0) threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+
+  const RgbImage finest = toRgbImage(exemplarSrgb);
+  const std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
+  const ExemplarPyramid pyramid = buildExemplarPyramid(finest, o.levels, control);
+  PyramidState state;
+  for (int l = 0; l < o.levels; ++l) stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], o, state));
+  result.volume = solidVolumeOf(state.volume, o, finest.width);
+  stats.synthesisSeconds = secondsSince(start);
+  if (o.measure) stats.quality = measureQuality(state, finest, o.measureOptions);
+  stats.seconds = secondsSince(start);
   return result;
 }
 

@@ -1,9 +1,73 @@
 #pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 #include "synthesis/SynthesisOptions.h"
+#include "voxel/SolidVolume.h"
 
 namespace solidtex {
+
+/// One search and optimisation step of a level.
+struct IterationStatistics {
+  double energy = 0;  ///< mean distance of the slice neighbourhoods to their matches, before the step
+  double searchSeconds = 0;
+  double solveSeconds = 0;
+  std::optional<double> positionCoverage;  ///< chen-wang: share of exemplar pixels copied after the step
+};
+
+/// How a level's slice neighbourhoods find their exemplar matches.
+enum class NeighborhoodSearch { Exhaustive, KCoherence, KdTree };
+
+/// "exhaustive", "k-coherence" or "kd-tree".
+std::string searchName(NeighborhoodSearch search);
+
+/// One level of the pyramid, coarsest first.
+struct LevelStatistics {
+  int volumeSize = 0;  ///< edge of the level's cubic volume
+  int exemplarWidth = 0;
+  int exemplarHeight = 0;
+  int neighborhood = 0;           ///< side of the square neighbourhoods
+  int exemplarNeighborhoods = 0;  ///< how many the exemplar has
+  int pcaDims = 0;
+  double pcaKeptVariance = 0;     ///< share of the neighbourhoods' variance the PCA keeps
+  NeighborhoodSearch search = NeighborhoodSearch::Exhaustive;
+  double analysisSeconds = 0;     ///< neighbourhoods, PCA, similarity sets or tree
+  std::vector<IterationStatistics> iterations;
+  double seconds = 0;
+};
+
+/// How the finished solid's slices compare with the exemplar (SynthesisOptions::measure).
+struct SolidQuality {
+  double energyAxis = 0;     ///< slice energy (eq. 1, exponent kEnergyExponent) on axis slices
+  double energyOblique = 0;  ///< the same on random oblique planes
+  double energyAxisSquared = 0;     ///< exponent 2
+  double energyObliqueSquared = 0;
+  int energyNeighborhood = 0;       ///< side of the compared neighbourhoods
+  double positionCoverage = 0;      ///< share of exemplar pixels some voxel copies
+  double positionFlatness = 0;      ///< normalised entropy of voxels per exemplar pixel (1 = even)
+  double positionVariation = 0;     ///< their coefficient of variation
+  double indexCoverage = 0;         ///< share of exemplar neighbourhoods matched at the finest level
+  double colorHistogramDistance = 0;  ///< total variation between joint RGB histograms, in [0,1]
+  double seconds = 0;
+};
+
+/// What the synthesis did and how long it took.
+struct SynthesisStatistics {
+  std::vector<int> neighborhoods;  ///< side per level, coarsest first
+  std::vector<LevelStatistics> levels;
+  std::optional<SolidQuality> quality;
+  double synthesisSeconds = 0;  ///< without the quality measures
+  double seconds = 0;
+};
+
+/// The synthesised volume and how it was made.
+struct SynthesisResult {
+  SolidVolume volume;  ///< dims size^3, linear RGB colour, density empty, sourcePosition for chen-wang
+  SynthesisStatistics statistics;
+};
 
 /// Synthesises a solid texture from a 2D exemplar (CV_32FC3 sRGB in [0,1], R,G,B order, as
 /// loadPhoto returns; 8-bit and grey images are accepted too) with the chosen method.

@@ -8,8 +8,8 @@
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/srgb.h"
 #include "particles/rotation.h"
-#include "segmentation/analyzeExemplar.h"
 
 namespace solidtex {
 namespace {

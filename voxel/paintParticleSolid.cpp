@@ -79,22 +79,19 @@ int wrap(double x, int n) {
 
 } // namespace
 
-SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& placement, double voxelsPerPixel,
-                               std::uint64_t seed) {
+SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
+                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel, std::uint64_t seed) {
   SolidVolume volume;
-  const Dims dims = placement.dims;
   volume.dims = dims;
-  volume.particleId = std::move(placement.ids);
-  placement.ids.clear();
+  volume.particleId = std::move(ids);
   volume.color.resize(dims.count());
 
   const double pixelsPerVoxel = 1.0 / voxelsPerPixel;
   Rng rng(deriveSeed(seed, 0xC0102));
   const Projection background = randomProjection(rng, pixelsPerVoxel);
   std::vector<Projection> projections;
-  projections.reserve(placement.particles.size());
-  for (const PlacedParticle& placed : placement.particles)
-    projections.push_back(randomProjection(rng, 1.0 / placed.voxelsPerPixel));
+  projections.reserve(particles.size());
+  for (const ParticlePaint& particle : particles) projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
   const cv::Mat backgroundResidual = fillParticleHoles(stats);
 
   tbb::parallel_for(0, dims.z, [&](int z) {
@@ -109,13 +106,11 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& plac
           volume.color[idx] = clamp01(stats.backgroundColor + r);
           continue;
         }
-        const PlacedParticle& placed = placement.particles[std::size_t(id - 1)];
-        const Particle2D& source = stats.particles[std::size_t(placed.source)];
+        const ParticlePaint& particle = particles[std::size_t(id - 1)];
+        const Particle2D& source = stats.particles[std::size_t(particle.source)];
         const Projection& proj = projections[std::size_t(id - 1)];
         // Project about the particle's centre onto the centre of its photo particle's box.
-        const Eigen::Vector3d centre(placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
-                                     placed.origin.z + placed.box.z * 0.5);
-        const Eigen::Vector3d local = p - centre;
+        const Eigen::Vector3d local = p - Eigen::Vector3d(particle.centre[0], particle.centre[1], particle.centre[2]);
         const int c = std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
         const int r = std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
         // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.

@@ -1,20 +1,29 @@
 #pragma once
+#include <array>
 #include <cstdint>
+#include <vector>
 
-#include "placement/placeLargestFirst.h"
 #include "segmentation/ExemplarStats.h"
 #include "voxel/SolidVolume.h"
 
 namespace solidtex {
+
+/// A placed particle as painting needs it.
+struct ParticlePaint {
+  int source = -1;                  ///< index into ExemplarStats::particles
+  std::array<double, 3> centre{};   ///< centre of its box, in volume voxels
+  double voxelsPerPixel = 1;        ///< the scale its shape was made at
+};
 
 /// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
 /// colour plus that particle's own residual, each background voxel the background mean plus the
 /// background residual. Residuals are laid into 3D by parallel projection along an oblique
 /// direction (random per particle), so no axis slice shows them smeared into streaks.
 /// The background's residual is laid at `voxelsPerPixel`, each particle's at the scale it was made at.
-/// density is left implicit (1 on particles, as writeVdb writes it); particle_id is the placement's id grid, moved out of `placement` (whose
-/// ids are left empty) so that a 512^3 solid does not hold two copies.
-SolidVolume paintParticleSolid(const ExemplarStats& stats, PlacementResult& placement, double voxelsPerPixel,
-                               std::uint64_t seed);
+/// `ids` (dims.count(), 0 background, id i is particles[i - 1]) becomes the volume's particle_id grid;
+/// it is taken by value so that callers can move a 512^3 grid in rather than hold two copies.
+/// density is left implicit (1 on particles, as writeVdb writes it).
+SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
+                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel, std::uint64_t seed);
 
 } // namespace solidtex

@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "segmentation/analyzeExemplar.h"
+#include "common/srgb.h"
 
 namespace solidtex {
 

@@ -19,7 +19,7 @@ std::vector<cv::Point> largestOuterContour(const cv::Mat& region) {
   });
 }
 
-void measureColour(Particle2D& p, const cv::Mat& linear) {
+void measureColor(Particle2D& p, const cv::Mat& linear) {
   const cv::Mat pixels = linear(p.box);
   const cv::Scalar mean = cv::mean(pixels, p.mask);
   p.color = cv::Vec3f(float(mean[0]), float(mean[1]), float(mean[2]));
@@ -36,7 +36,7 @@ bool measureOne(int label, const cv::Rect& box, const cv::Mat& labels, const cv:
   p.contour = std::move(contour);
   p.area = cv::countNonZero(p.mask);
   p.border = touchesBorder(box, labels.size());
-  measureColour(p, linear);
+  measureColor(p, linear);
   return true;
 }
 

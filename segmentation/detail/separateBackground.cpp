@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/detail/chooseBackground.h"
-#include "segmentation/detail/colour.h"
+#include "segmentation/detail/color.h"
 #include "segmentation/detail/edgeDecision.h"
 #include "segmentation/detail/flattenShading.h"
 #include "segmentation/detail/morphology.h"

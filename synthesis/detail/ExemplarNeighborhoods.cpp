@@ -1,4 +1,4 @@
-#include "synthesis/ExemplarNeighborhoods.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
 
 namespace solidtex::synthesis {
 

@@ -4,9 +4,9 @@
 
 #include <Eigen/Core>
 
-#include "synthesis/NeighborhoodShape.h"
-#include "synthesis/Pca.h"
-#include "synthesis/RgbImage.h"
+#include "synthesis/detail/NeighborhoodShape.h"
+#include "synthesis/detail/Pca.h"
+#include "synthesis/detail/RgbImage.h"
 
 namespace solidtex::synthesis {
 

@@ -1,4 +1,4 @@
-#include "synthesis/ExemplarPyramid.h"
+#include "synthesis/detail/ExemplarPyramid.h"
 
 #include <algorithm>
 

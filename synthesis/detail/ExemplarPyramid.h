@@ -4,7 +4,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "synthesis/RgbImage.h"
+#include "synthesis/detail/RgbImage.h"
 
 namespace solidtex::synthesis {
 

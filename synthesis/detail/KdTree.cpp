@@ -1,4 +1,4 @@
-#include "synthesis/KdTree.h"
+#include "synthesis/detail/KdTree.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "synthesis/Pca.h"
+#include "synthesis/detail/Pca.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "synthesis/SimilaritySets.h"
+#include "synthesis/detail/SimilaritySets.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,7 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "synthesis/KdTree.h"
+#include "synthesis/detail/KdTree.h"
 
 namespace solidtex::synthesis {
 

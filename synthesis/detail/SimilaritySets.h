@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "synthesis/ExemplarNeighborhoods.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
 
 namespace solidtex::synthesis {
 

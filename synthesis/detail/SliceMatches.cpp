@@ -1,4 +1,4 @@
-#include "synthesis/SliceMatches.h"
+#include "synthesis/detail/SliceMatches.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "synthesis/Histograms.h"
+#include "synthesis/detail/histograms.h"
 
 namespace solidtex::synthesis {
 

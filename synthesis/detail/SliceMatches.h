@@ -2,11 +2,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/KdTree.h"
-#include "synthesis/SimilaritySets.h"
-#include "synthesis/SliceNeighborhoods.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/KdTree.h"
+#include "synthesis/detail/SimilaritySets.h"
+#include "synthesis/detail/SliceNeighborhoods.h"
+#include "synthesis/detail/WorkVolume.h"
 
 namespace solidtex::synthesis {
 

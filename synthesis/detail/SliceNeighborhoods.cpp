@@ -1,4 +1,4 @@
-#include "synthesis/SliceNeighborhoods.h"
+#include "synthesis/detail/SliceNeighborhoods.h"
 
 namespace solidtex::synthesis {
 

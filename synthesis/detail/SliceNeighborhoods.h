@@ -2,8 +2,8 @@
 #include <array>
 #include <cstddef>
 
-#include "synthesis/NeighborhoodShape.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/detail/NeighborhoodShape.h"
+#include "synthesis/detail/WorkVolume.h"
 
 namespace solidtex::synthesis {
 

@@ -1,10 +1,10 @@
-#include "synthesis/ChenWangSolver.h"
+#include "synthesis/detail/discreteSolve.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "synthesis/VoxelBatches.h"
+#include "synthesis/detail/VoxelBatches.h"
 
 namespace solidtex::synthesis {
 
@@ -25,17 +25,17 @@ struct Proposal {
 /// Per-thread working memory of one voxel's choice.
 struct VoxelScratch {
   std::vector<Proposal> proposals;
-  std::vector<float> votes, colours;
+  std::vector<float> votes, colors;
 };
 
 /// Eq. 3's factor 1 / (1 + sum_j max(0, Hs_j - He_j)) for a pixel's colour.
-double colourFactor(const float* rgb, const DiscreteHistograms& h) {
-  if (!h.volumeColours) return 1.0;
+double colorFactor(const float* rgb, const DiscreteHistograms& h) {
+  if (!h.volumeColors) return 1.0;
   std::array<double, 3> volume, exemplar;
   for (int c = 0; c < 3; ++c) {
-    const int bin = h.volumeColours->binOf(rgb[c]);
-    volume[c] = h.volumeColours->density(c, bin);
-    exemplar[c] = h.exemplarColours->density(c, bin);
+    const int bin = h.volumeColors->binOf(rgb[c]);
+    volume[c] = h.volumeColors->density(c, bin);
+    exemplar[c] = h.exemplarColors->density(c, bin);
   }
   return colorHistogramWeight(1.0, volume, exemplar);
 }
@@ -53,10 +53,10 @@ PixelFactors pixelFactors(const RgbImage& exemplar, const DiscreteHistograms& h,
   f.factor.resize(pixels);
   f.withoutOne.resize(pixels);
   tbb::parallel_for(std::size_t(0), pixels, [&](std::size_t p) {
-    const double colour = colourFactor(exemplar.data.data() + 3 * p, h);
+    const double color = colorFactor(exemplar.data.data() + 3 * p, h);
     const double count = double((*h.position)[p]), theta = scale * (*h.theta)[p];
-    f.factor[p] = float(positionHistogramWeight(colour, scale * count, theta));
-    f.withoutOne[p] = float(positionHistogramWeight(colour, scale * (count - 1), theta));
+    f.factor[p] = float(positionHistogramWeight(color, scale * count, theta));
+    f.withoutOne[p] = float(positionHistogramWeight(color, scale * (count - 1), theta));
   });
   return f;
 }
@@ -79,7 +79,7 @@ void mergeRepeatedPixels(std::vector<Proposal>& proposals) {
   proposals.resize(out);
 }
 
-float squaredColourDistance(const float* a, const float* b) {
+float squaredColorDistance(const float* a, const float* b) {
   const float d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
   return d0 * d0 + d1 * d1 + d2 * d2;
 }
@@ -100,7 +100,7 @@ std::int32_t largestVote(const std::vector<Proposal>& merged) {
 /// exp(-x) (within 0.02 of it everywhere) that costs four squarings instead of a call to exp.
 /// Branch-free (the cut-off is a max): which pairs fall beyond it is unpredictable. x/16 is exact,
 /// so 1 - x/16 <= 0 exactly when x >= 16.
-inline float colourKernel(float x) {
+inline float colorKernel(float x) {
   float k = std::max(0.0f, 1.0f - x * (1.0f / 16.0f));
   k *= k;
   k *= k;
@@ -112,18 +112,18 @@ inline float colourKernel(float x) {
 /// evaluated once (the kernel is symmetric). The proposals' colours are copied side by side first
 /// (the inner loop would otherwise chase exemplar indices), and a's own vote is summed in a
 /// register; the additions happen in the same order either way.
-std::int32_t colourMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth, std::vector<float>& votes,
-                        std::vector<float>& colours) {
+std::int32_t colorMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth, std::vector<float>& votes,
+                        std::vector<float>& colors) {
   const std::size_t n = merged.size();
   votes.assign(n, 0.0f);
-  colours.resize(3 * n);
-  for (std::size_t a = 0; a < n; ++a) std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3, colours.begin() + std::ptrdiff_t(3 * a));
+  colors.resize(3 * n);
+  for (std::size_t a = 0; a < n; ++a) std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3, colors.begin() + std::ptrdiff_t(3 * a));
   for (std::size_t a = 0; a < n; ++a) {
-    const float* ea = colours.data() + 3 * a;
+    const float* ea = colors.data() + 3 * a;
     const float wa = merged[a].weight;
     float vote = votes[a] + wa * (1.0f + 1e-6f);  // kernel 1 on itself; near-ties: the own weight
     for (std::size_t b = a + 1; b < n; ++b) {
-      const float k = colourKernel(squaredColourDistance(ea, colours.data() + 3 * b) * invBandwidth);
+      const float k = colorKernel(squaredColorDistance(ea, colors.data() + 3 * b) * invBandwidth);
       vote += merged[b].weight * k;
       votes[b] += wa * k;
     }
@@ -148,7 +148,7 @@ std::int32_t nearestToAverage(const std::vector<Proposal>& merged, const RgbImag
   std::int32_t best = -1;
   float bestDistance = std::numeric_limits<float>::infinity(), bestWeight = -1;
   for (const Proposal& p : merged) {
-    const float d = squaredColourDistance(exemplar.data.data() + 3 * std::size_t(p.pixel), mean);
+    const float d = squaredColorDistance(exemplar.data.data() + 3 * std::size_t(p.pixel), mean);
     if (d < bestDistance || (d == bestDistance && p.weight > bestWeight)) {
       bestDistance = d;
       bestWeight = p.weight;
@@ -166,9 +166,9 @@ void refreshHistograms(const WorkVolume& volume, const std::vector<std::int32_t>
     if (now == old) return;
     if (old >= 0) --(*h.position)[old];
     if (now >= 0) ++(*h.position)[now];
-    if (h.volumeColours) {
-      if (old >= 0) h.volumeColours->add(exemplar.data.data() + 3 * std::size_t(old), -1);
-      if (now >= 0) h.volumeColours->add(exemplar.data.data() + 3 * std::size_t(now), +1);
+    if (h.volumeColors) {
+      if (old >= 0) h.volumeColors->add(exemplar.data.data() + 3 * std::size_t(old), -1);
+      if (now >= 0) h.volumeColors->add(exemplar.data.data() + 3 * std::size_t(now), +1);
     }
   });
 }
@@ -206,9 +206,9 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
       mergeRepeatedPixels(proposals);
       std::int32_t best = -1;
       switch (settings.choice) {
-        case DiscreteSolveSettings::Choice::LargestVote: best = largestVote(proposals); break;
-        case DiscreteSolveSettings::Choice::ColourMode: best = colourMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colours); break;
-        case DiscreteSolveSettings::Choice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
+        case ProposalChoice::LargestVote: best = largestVote(proposals); break;
+        case ProposalChoice::ColorMode: best = colorMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colors); break;
+        case ProposalChoice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
       }
       if (best < 0) return;
       volume.source[vi] = best;

@@ -2,27 +2,23 @@
 #include <cstdint>
 #include <vector>
 
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/Histograms.h"
-#include "synthesis/RgbImage.h"
-#include "synthesis/SliceMatches.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/SynthesisOptions.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/histograms.h"
+#include "synthesis/detail/RgbImage.h"
+#include "synthesis/detail/SliceMatches.h"
+#include "synthesis/detail/WorkVolume.h"
 
 namespace solidtex::synthesis {
 
 /// Settings of the discrete solver.
 struct DiscreteSolveSettings {
-  double irlsExponent = 0.8;  ///< r in w = ||s - e||^(r-2) (Kopf et al.'s robust IRLS weights)
+  double irlsExponent = kEnergyExponent;  ///< r in w = ||s - e||^(r-2) (Kopf et al.'s robust IRLS weights)
   double irlsEpsilon = 1e-4;  ///< per component, added to squared distances before the power
   /// Histogram counts H and theta are multiplied by this before eq. 4 (1 = the paper's counts).
   double histogramScale = 1.0;
-  /// How the copied pixel is chosen among the proposals: the one nearest to their weighted average
-  /// (Han et al.'s discrete solver as the paper describes it), or the pixel with the largest summed
-  /// weight (a weighted vote, which lets the re-weighting act on the choice itself).
-  /// ColourMode: the proposal whose colour gathers the largest weight within a Gaussian colour kernel
-  /// (a weighted vote robust to grain).
-  enum class Choice { NearestToAverage, LargestVote, ColourMode } choice = Choice::NearestToAverage;
-  double modeBandwidth = 0.01;  ///< ColourMode kernel: exp(-||a - b||^2 / bandwidth), sRGB units
+  ProposalChoice choice = ProposalChoice::ColorMode;
+  double modeBandwidth = 0.01;  ///< ColorMode kernel: exp(-||a - b||^2 / bandwidth), sRGB units
 };
 
 /// The global statistics the discrete solver re-weights with and keeps in step with the volume.
@@ -33,8 +29,8 @@ struct DiscreteHistograms {
   /// Eq. 4 alone only penalises single over-used pixels: when a whole colour class is under-used
   /// while the majority class still has unused pixels (two flat colours, thin veins), nothing stops
   /// the class from eroding. Eq. 3 sees the class.
-  const ChannelHistograms* exemplarColours = nullptr;
-  ChannelHistograms* volumeColours = nullptr;
+  const ChannelHistograms* exemplarColors = nullptr;
+  ChannelHistograms* volumeColors = nullptr;
 };
 
 /// Chen–Wang optimisation phase (section 4.2, discrete solver of Han et al.): every voxel weighs

@@ -1,4 +1,4 @@
-#include "synthesis/Histograms.h"
+#include "synthesis/detail/histograms.h"
 
 #include <numeric>
 

@@ -1,4 +1,4 @@
-#include "synthesis/SolidMeasures.h"
+#include "synthesis/detail/solidMeasures.h"
 
 #include <cmath>
 #include <limits>
@@ -8,9 +8,9 @@
 #include <tbb/parallel_for.h>
 
 #include "common/Random.h"
-#include "synthesis/ColorSpace.h"
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/SliceNeighborhoods.h"
+#include "common/srgb.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/SliceNeighborhoods.h"
 
 namespace solidtex::synthesis {
 
@@ -73,7 +73,7 @@ double meanPower(const std::vector<double>& squared, double gamma) {
 
 } // namespace
 
-SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const MeasureOptions& options) {
+SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const SliceMeasureOptions& options) {
   NeighborhoodShape shape{std::min({options.neighborhood, exemplar.width, exemplar.height})};
   const Eigen::MatrixXf ex = gatherExemplarNeighborhoods(exemplar, shape);
   const int D = shape.dims();
@@ -98,7 +98,7 @@ SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const Mea
   }
 
   const std::vector<double> axis = nearestSquaredDistances(axisQ, ex), oblique = nearestSquaredDistances(obliqueQ, ex);
-  return {meanPower(axis, kSliceEnergyExponent), meanPower(oblique, kSliceEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
+  return {meanPower(axis, kEnergyExponent), meanPower(oblique, kEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
 }
 
 double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImage& exemplar, int bins) {
@@ -150,7 +150,7 @@ WorkVolume srgbVolumeOf(const SolidVolume& volume, int exemplarWidth) {
   v.n = volume.dims.x;
   v.rgb.resize(v.count() * 3);
   for (std::size_t i = 0; i < v.count(); ++i)
-    for (int c = 0; c < 3; ++c) v.rgb[3 * i + c] = linearToSrgbChannel(volume.color[i][c]);
+    for (int c = 0; c < 3; ++c) v.rgb[3 * i + c] = linearToSrgb(volume.color[i][c]);
   if (!volume.sourcePosition.empty()) {
     v.source.resize(v.count());
     for (std::size_t i = 0; i < v.count(); ++i)

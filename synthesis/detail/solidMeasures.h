@@ -2,26 +2,15 @@
 #include <cstdint>
 #include <vector>
 
-#include "synthesis/RgbImage.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/SynthesisOptions.h"
+#include "synthesis/detail/RgbImage.h"
+#include "synthesis/detail/WorkVolume.h"
 #include "voxel/SolidVolume.h"
 
 namespace solidtex::synthesis {
 
-/// How the quality of a solid texture is measured.
-struct MeasureOptions {
-  int neighborhood = 8;        ///< side of the compared square neighbourhoods
-  int axisSamples = 1536;      ///< slice neighbourhoods sampled on axis-aligned slices (a third per axis)
-  int obliqueSamples = 1536;   ///< slice neighbourhoods sampled on random oblique planes
-  std::uint64_t seed = 12345;  ///< where the samples lie
-  int histogramBins = 8;       ///< per channel, for the joint colour histogram
-};
-
-/// Kopf et al.'s and Chen and Wang's gamma in eq. 1.
-inline constexpr double kSliceEnergyExponent = 0.8;
-
 /// Slice energy, Kopf's and Chen and Wang's eq. 1: the mean over sampled slice neighbourhoods of
-/// ||s - e||^gamma, e the nearest exemplar neighbourhood (exact, full dimension), gamma = 0.8, the
+/// ||s - e||^gamma, e the nearest exemplar neighbourhood (exact, full dimension), gamma = kEnergyExponent, the
 /// distance taken per component (RMS over the vector, colours sRGB in [0,1]) so that sizes compare.
 /// The squared form (gamma = 2: the mean squared distance per component) is kept beside it: it
 /// weighs a few bad seams far more than many near-exact copies, so it prefers a blend to copies.
@@ -33,7 +22,7 @@ struct SliceEnergy {
 };
 
 /// Measures the slice energy of a periodic sRGB volume against the exemplar. Deterministic.
-SliceEnergy sliceEnergy(const WorkVolume& srgbVolume, const RgbImage& exemplar, const MeasureOptions& options = {});
+SliceEnergy sliceEnergy(const WorkVolume& srgbVolume, const RgbImage& exemplar, const SliceMeasureOptions& options = {});
 
 /// Total-variation distance (in [0,1]) between the joint RGB histograms (bins^3) of `count`
 /// interleaved sRGB colours and of the exemplar's pixels.

@@ -1,4 +1,4 @@
-#include "synthesis/Upsample.h"
+#include "synthesis/detail/upsample.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #pragma once
 #include <cstdint>
 
-#include "synthesis/RgbImage.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/detail/RgbImage.h"
+#include "synthesis/detail/WorkVolume.h"
 
 namespace solidtex::synthesis {
 

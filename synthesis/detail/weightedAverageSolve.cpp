@@ -1,8 +1,8 @@
-#include "synthesis/KopfSolver.h"
+#include "synthesis/detail/weightedAverageSolve.h"
 
 #include <cmath>
 
-#include "synthesis/VoxelBatches.h"
+#include "synthesis/detail/VoxelBatches.h"
 
 namespace solidtex::synthesis {
 

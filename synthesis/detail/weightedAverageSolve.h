@@ -2,17 +2,18 @@
 #include <cstdint>
 #include <vector>
 
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/Histograms.h"
-#include "synthesis/RgbImage.h"
-#include "synthesis/SliceMatches.h"
-#include "synthesis/WorkVolume.h"
+#include "synthesis/SynthesisOptions.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/histograms.h"
+#include "synthesis/detail/RgbImage.h"
+#include "synthesis/detail/SliceMatches.h"
+#include "synthesis/detail/WorkVolume.h"
 
 namespace solidtex::synthesis {
 
 /// Settings of Kopf et al.'s least-squares (IRLS) solver.
 struct WeightedAverageSettings {
-  double irlsExponent = 0.8;  ///< r in w = ||s - e||^(r-2)
+  double irlsExponent = kEnergyExponent;  ///< r in w = ||s - e||^(r-2)
   double irlsEpsilon = 1e-4;  ///< per component, added to squared distances before the power
 };
 

@@ -1,11 +1,11 @@
 #include <gtest/gtest.h>
 
-#include "segmentation/analyzeExemplar.h"
+#include "common/srgb.h"
 
 namespace solidtex {
 namespace {
 
-TEST(SegmentationSrgb, RoundTripsEveryValue) {
+TEST(Srgb, RoundTripsEveryValue) {
   for (int i = 0; i <= 1000; ++i) {
     const float c = float(i) / 1000.0f;
     EXPECT_NEAR(linearToSrgb(srgbToLinear(c)), c, 2e-6f) << c;
@@ -13,7 +13,7 @@ TEST(SegmentationSrgb, RoundTripsEveryValue) {
   }
 }
 
-TEST(SegmentationSrgb, MatchesTheStandardCurve) {
+TEST(Srgb, MatchesTheStandardCurve) {
   EXPECT_FLOAT_EQ(srgbToLinear(0.0f), 0.0f);
   EXPECT_FLOAT_EQ(srgbToLinear(1.0f), 1.0f);
   EXPECT_NEAR(srgbToLinear(0.5f), 0.214041f, 1e-5f);
@@ -21,14 +21,14 @@ TEST(SegmentationSrgb, MatchesTheStandardCurve) {
   EXPECT_NEAR(linearToSrgb(0.18f), 0.461356f, 1e-5f);     // middle grey
 }
 
-TEST(SegmentationSrgb, ClampsOutOfRangeValues) {
+TEST(Srgb, ClampsOutOfRangeValues) {
   EXPECT_FLOAT_EQ(srgbToLinear(-0.5f), 0.0f);
   EXPECT_FLOAT_EQ(srgbToLinear(2.0f), 1.0f);
   EXPECT_FLOAT_EQ(linearToSrgb(-1.0f), 0.0f);
   EXPECT_FLOAT_EQ(linearToSrgb(3.0f), 1.0f);
 }
 
-TEST(SegmentationSrgb, IsMonotonic) {
+TEST(Srgb, IsMonotonic) {
   float previous = -1;
   for (int i = 0; i <= 4096; ++i) {
     const float v = srgbToLinear(float(i) / 4096.0f);

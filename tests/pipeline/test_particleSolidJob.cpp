@@ -13,17 +13,14 @@
 #include "pipeline/particleSolidJob.h"
 #include "validation/sectionStatistics.h"
 #include "voxel/vdbIO.h"
+#include "tests/scratchPath.h"
 
 namespace solidtex {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "solidtex_pipeline_test";
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return test::scratchPath("pipeline_test", name); }
 
 ParticleSolidJob jobFor(const std::string& exemplar, int size, const fs::path& output) {
   ParticleSolidJob job;

@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/detail/colour.h"
+#include "segmentation/imageIO.h"
+#include "segmentation/detail/color.h"
 #include "segmentation/detail/separateBackground.h"
 #include "testHelpers.h"
 

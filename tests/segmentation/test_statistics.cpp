@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "common/srgb.h"
 #include "segmentation/analyzeExemplar.h"
 #include "segmentation/imageIO.h"
 #include "testHelpers.h"
@@ -78,7 +79,7 @@ TEST(SegmentationStatistics, IdsFollowTheBoxesRowByRow) {
   EXPECT_EQ(stats.particles[1].box, cv::Rect(10, 12, 10, 10));
 }
 
-TEST(SegmentationStatistics, ColoursMasksAndResiduals) {
+TEST(SegmentationStatistics, ColorsMasksAndResiduals) {
   const ExemplarStats stats = analyzeBlocks({{{20, 20, 16, 12}, kRed}}, {80, 60}, kGrey);
   ASSERT_EQ(stats.particles.size(), 1u);
   const Particle2D& p = stats.particles[0];
@@ -96,7 +97,7 @@ TEST(SegmentationStatistics, ColoursMasksAndResiduals) {
   EXPECT_LT(cv::norm(stats.backgroundResidual, cv::NORM_INF), 1e-6);
 }
 
-TEST(SegmentationStatistics, ResidualIsColourMinusMeanInsideTheMask) {
+TEST(SegmentationStatistics, ResidualIsColorMinusMeanInsideTheMask) {
   cv::Mat photo(60, 80, CV_32FC3, cv::Scalar(0.9, 0.9, 0.9));
   for (int y = 20; y < 40; ++y)
     for (int x = 20; x < 50; ++x) photo.at<cv::Vec3f>(y, x) = {0.1f + 0.01f * float(x - 20), 0.2f, 0.3f};

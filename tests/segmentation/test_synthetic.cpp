@@ -6,8 +6,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "common/srgb.h"
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/detail/colour.h"
+#include "segmentation/detail/color.h"
 #include "segmentation/detail/separateBackground.h"
 #include "testHelpers.h"
 
@@ -39,7 +40,7 @@ TEST(SegmentationSynthetic, DiscAreasMatchTheirRadii) {
   for (const Particle2D& p : stats.particles) EXPECT_FALSE(p.border);
 }
 
-TEST(SegmentationSynthetic, ParticleColourIsTheLinearMean) {
+TEST(SegmentationSynthetic, ParticleColorIsTheLinearMean) {
   const cv::Vec3f red(0.8f, 0.2f, 0.1f);
   const ExemplarStats stats = analyzeExemplar(discPhoto({200, 160}, kPaper, {{{100, 80}, 30, red}}), "one", {});
   ASSERT_EQ(stats.particles.size(), 1u);

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "synthesis/ChenWangSolver.h"
-#include "synthesis/Histograms.h"
+#include "synthesis/detail/discreteSolve.h"
+#include "synthesis/detail/histograms.h"
 
 using namespace solidtex::synthesis;
 

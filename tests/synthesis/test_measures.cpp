@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "synthesis/ExemplarPyramid.h"
-#include "synthesis/SolidMeasures.h"
-#include "synthesis/Upsample.h"
+#include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/solidMeasures.h"
+#include "synthesis/detail/upsample.h"
 #include "TestImages.h"
 
 using namespace solidtex;
@@ -37,7 +37,7 @@ TEST(Measures, SliceEnergyIsZeroForAConstantSolidAndLargerForNoise) {
   cv::Mat flat(16, 16, CV_32FC3, cv::Scalar(0.2, 0.4, 0.6));
   const RgbImage ex = toRgbImage(flat);
   WorkVolume v = randomVolume(12, ex, 1);
-  MeasureOptions o;
+  SliceMeasureOptions o;
   o.neighborhood = 4;
   o.axisSamples = 90;
   o.obliqueSamples = 60;

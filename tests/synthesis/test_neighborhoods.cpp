@@ -3,11 +3,11 @@
 #include <limits>
 #include <set>
 
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/ExemplarPyramid.h"
-#include "synthesis/SliceMatches.h"
-#include "synthesis/SliceNeighborhoods.h"
-#include "synthesis/Upsample.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/SliceMatches.h"
+#include "synthesis/detail/SliceNeighborhoods.h"
+#include "synthesis/detail/upsample.h"
 #include "TestImages.h"
 
 using namespace solidtex;

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "common/Random.h"
-#include "synthesis/Pca.h"
+#include "synthesis/detail/Pca.h"
 
 using namespace solidtex;
 using namespace solidtex::synthesis;

@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
-#include "synthesis/ExemplarNeighborhoods.h"
-#include "synthesis/ExemplarPyramid.h"
-#include "synthesis/KdTree.h"
-#include "synthesis/SimilaritySets.h"
+#include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/KdTree.h"
+#include "synthesis/detail/SimilaritySets.h"
 #include "TestImages.h"
 
 using namespace solidtex;

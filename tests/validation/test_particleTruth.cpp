@@ -157,7 +157,7 @@ TEST_P(ParticleTruthShapes, ClassesHaveTheirSizesAndShares) {
 
 // The photo is the middle section: particle pixels in their class colour, background elsewhere, so
 // segmenting it finds the section's particles and its area fraction.
-TEST_P(ParticleTruthShapes, PhotoIsTheMiddleSectionInClassColours) {
+TEST_P(ParticleTruthShapes, PhotoIsTheMiddleSectionInClassColors) {
   const ParticleTruthOptions options = smallTruth(GetParam());
   const ParticleTruth& t = truthOf(options);
   const Dims& d = t.volume.dims;
