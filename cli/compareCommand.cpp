@@ -12,10 +12,10 @@ Action addCompareCommand(CLI::App& app) {
   command->add_option("photo", job->photo, "The photo the solid was made from")->required();
   command->add_option("volume", job->volume, "The particle solid (.vdb)")->required()->check(CLI::ExistingFile);
   command->add_option("--scale", job->voxelsPerPixel, "Voxels per photo pixel (default: from the .vdb's metadata)");
-  command->add_option("--axis-planes", job->sections.offsetsPerAxis, "Axis-aligned section planes per axis")
-      ->capture_default_str()->check(CLI::Range(1, 4096));
-  command->add_option("--oblique-planes", job->sections.obliquePlanes, "Random oblique section planes")
-      ->capture_default_str()->check(CLI::Range(0, 100000));
+  command->add_option("--axis-planes", job->sections.offsetsPerAxis, "Axis-aligned section planes per axis (1-4096)")
+      ->capture_default_str();
+  command->add_option("--oblique-planes", job->sections.obliquePlanes, "Random oblique section planes (0-100000)")
+      ->capture_default_str();
   command->add_option("--seed", job->sections.seed, "Seed for the oblique planes")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");
   command->add_option("--plot", job->plot, "Write the histograms and CDFs as a PNG");

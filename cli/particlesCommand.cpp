@@ -43,11 +43,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                       "Rounding of the hulls' edges as a share of a particle's size, 0 (the paper's sharp hulls) "
                       "to 0.5, or auto: as round as the photo's particles")
       ->capture_default_str();
-  command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused")
-      ->capture_default_str()->check(CLI::Range(1, 4096));
+  command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused (1-4096)")
+      ->capture_default_str();
   command->add_option("--seed", job->seed, "Random seed: same seed, same volume")->capture_default_str();
   auto threads = std::make_shared<int>(0);
-  command->add_option("--threads", *threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", *threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
   command->add_flag("!--quiet", job->progress, "No progress line");

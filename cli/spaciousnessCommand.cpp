@@ -14,11 +14,11 @@ Action addSpaciousnessCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "spaciousness", "Measure the four spaciousness fields against exact distances on a scene of the photo's particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
-  command->add_option("--size", job->size, "Edge of the cubic volume in voxels")->capture_default_str()->check(CLI::Range(16, 512));
+  command->add_option("--size", job->size, "Edge of the cubic volume in voxels (16-512)")->capture_default_str();
   command->add_option("--particles", job->particles, "Particles placed before the fields are compared (0: up to the photo's area fraction)")
-      ->capture_default_str()->check(CLI::Range(0, 10000000));
+      ->capture_default_str();
   command->add_option("--seed", job->seed, "Random seed")->capture_default_str();
-  command->add_option("--threads", *threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", *threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write the measurements as JSON");
   command->add_option("--plot", job->plot, "Write the error histograms as a PNG");
   command->add_flag("!--quiet", job->progress, "No progress line");

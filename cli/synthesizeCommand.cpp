@@ -15,16 +15,16 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
   command->add_option("--method", *method, "chen-wang (histogram matching) or kopf (baseline)")->capture_default_str();
-  command->add_option("--size", o.size, "Edge of the cubic volume in voxels")->capture_default_str()->check(CLI::Range(8, 1024));
-  command->add_option("--levels", o.levels, "Multi-resolution levels")->capture_default_str()->check(CLI::Range(1, 8));
+  command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
+  command->add_option("--levels", o.levels, "Multi-resolution levels (1-8)")->capture_default_str();
   command->add_option("--neighborhoods", o.neighborhoods, "Neighbourhood side per level, coarsest first")
       ->delimiter(',')->capture_default_str();
-  command->add_option("--k", o.k, "k-coherence similarity set size")->capture_default_str()->check(CLI::Range(1, 64));
-  command->add_option("--iterations", o.iterations, "Iterations per level")->capture_default_str()->check(CLI::Range(1, 100));
-  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods")->capture_default_str()->check(CLI::Range(1, 512));
+  command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
+  command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
+  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")->capture_default_str();
   command->add_option("--control", job->control, "Greyscale map the exemplar's size: brighter appears more")->check(CLI::ExistingFile);
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
-  command->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview, "Folder for preview PNGs");
   command->add_flag("!--quiet", job->progress, "No progress line");

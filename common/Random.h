@@ -16,6 +16,13 @@ inline std::uint64_t deriveSeed(std::uint64_t seed, std::uint64_t stream) {
   return z ^ (z >> 31);
 }
 
+/// A seed for a tuple of stream numbers: deriveSeed(deriveSeed(seed, a), b, ...), so that work
+/// indexed by several numbers (phase, bin, pair, try) gets its own stream.
+template <typename... Streams>
+std::uint64_t deriveSeed(std::uint64_t seed, std::uint64_t stream, std::uint64_t next, Streams... rest) {
+  return deriveSeed(deriveSeed(seed, stream), next, std::uint64_t(rest)...);
+}
+
 /// Uniform double in [0,1) computed from the engine's bits, identical across standard libraries
 /// (std::uniform_real_distribution is not).
 inline double uniform01(Rng& rng) { return double(rng() >> 11) * 0x1.0p-53; }

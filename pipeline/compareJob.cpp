@@ -90,6 +90,8 @@ int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
 } // namespace
 
 nlohmann::json runCompare(const CompareJob& job) {
+  if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096) throw InputError("--axis-planes must be in [1, 4096]");
+  if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000) throw InputError("--oblique-planes must be in [0, 100000]");
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const SolidVolume volume = readVdb(job.volume);

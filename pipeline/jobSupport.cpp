@@ -38,9 +38,16 @@ double peakMemoryMiB() {
   return double(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
 }
 
-ThreadLimit::ThreadLimit(int threads)
-    : control_(tbb::global_control::max_allowed_parallelism,
-               std::size_t(threads > 0 ? threads : tbb::info::default_concurrency())) {}
+namespace {
+
+std::size_t checkedThreads(int threads) {
+  if (threads < 0) throw InputError("--threads must not be negative (0 = all cores)");
+  return std::size_t(threads > 0 ? threads : tbb::info::default_concurrency());
+}
+
+} // namespace
+
+ThreadLimit::ThreadLimit(int threads) : control_(tbb::global_control::max_allowed_parallelism, checkedThreads(threads)) {}
 
 void PhaseTimer::start(const std::string& name) {
   const auto now = Clock::now();

@@ -28,6 +28,7 @@ void checkJob(const ParticleSolidJob& job) {
   if (job.voxelsPerPixel < 0 || job.voxelsPerPixel > 64)
     throw InputError("--scale must be in (0, 64] voxels per pixel");
   if (job.particles.views < 3 || job.particles.views > 5) throw InputError("--views must be 3, 4 or 5");
+  if (job.particles.shapes < 1 || job.particles.shapes > 4096) throw InputError("--shapes must be in [1, 4096]");
   namespace fs = std::filesystem;
   const fs::path out(job.output);
   if (out.extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");

@@ -70,19 +70,11 @@ constexpr int kHintBlock = 8;
 
 Point pointOf(const Voxel& v) { return {double(v.x), double(v.y), double(v.z)}; }
 
-// A fixed offset in [-kJitter, kJitter] per axis (splitmix64 of the voxel).
+// A fixed offset in [-kJitter, kJitter] per axis, a function of the voxel alone.
 Point jitteredPointOf(const Voxel& v) {
-  std::uint64_t h = (std::uint64_t(std::uint32_t(v.x)) << 42) ^ (std::uint64_t(std::uint32_t(v.y)) << 21) ^ std::uint32_t(v.z);
-  const auto offset = [&h] {
-    h += 0x9e3779b97f4a7c15ULL;
-    std::uint64_t z = h;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return kJitter * (double(z >> 11) * 0x1.0p-53 * 2 - 1);
-  };
-  const double dx = offset(), dy = offset(), dz = offset();
-  return {v.x + dx, v.y + dy, v.z + dz};
+  const std::uint64_t key = (std::uint64_t(std::uint32_t(v.x)) << 42) ^ (std::uint64_t(std::uint32_t(v.y)) << 21) ^ std::uint32_t(v.z);
+  const auto offset = [key](std::uint64_t axis) { return kJitter * (double(deriveSeed(key, axis) >> 11) * 0x1.0p-53 * 2 - 1); };
+  return {v.x + offset(0), v.y + offset(1), v.z + offset(2)};
 }
 
 // -1, -1+h, ..., n: the wall sample coordinates along one axis, ends included.

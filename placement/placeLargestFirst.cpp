@@ -339,9 +339,7 @@ private:
   // The n-th shape of a pair comes from its own stream (seed, phase, bin, pair, n), whenever and
   // wherever it is made; a pair's shapes are taken in that order.
   ReadyShape makeShape(const ShapeKey& key, std::uint64_t n) const {
-    std::uint64_t stream = deriveSeed(options_.seed, kShapeStream + std::uint64_t(phase_));
-    for (const int part : key) stream = deriveSeed(stream, std::uint64_t(part));
-    Rng rng(deriveSeed(stream, n));
+    Rng rng(deriveSeed(options_.seed, kShapeStream + std::uint64_t(phase_), key[0], key[1], key[2], n));
     ReadyShape shape;
     shape.size = factory_.pickDepth(key[1], key[2], rng);
     const VoxelShape voxels =

@@ -54,7 +54,7 @@ std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
   if (o.size < 2 || o.size > 1024) throw InputError("--size " + std::to_string(o.size) + " is out of range (2 to 1024)");
   if (o.k < 1 || o.k > 64) throw InputError("--k " + std::to_string(o.k) + " is out of range (1 to 64)");
   if (o.iterations < 1 || o.iterations > 100) throw InputError("--iterations " + std::to_string(o.iterations) + " is out of range (1 to 100)");
-  if (o.pcaDims < 1) throw InputError("--pca-dims must be at least 1");
+  if (o.pcaDims < 1 || o.pcaDims > 512) throw InputError("--pca-dims " + std::to_string(o.pcaDims) + " is out of range (1 to 512)");
   if (o.threads < 0) throw InputError("--threads must not be negative");
   if (o.sparseStep < 1 || o.coherenceRadius < 0 || o.histogramBins < 1) throw InputError("invalid synthesis tuning options");
   std::vector<int> n = o.neighborhoods;

@@ -234,8 +234,8 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
 }
 
 void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) {
-  if (!(c.meanRadius >= 1 && c.share > 0 && c.radiusSpread >= 0 && c.radiusSpread <= 1))
-    throw InputError("each particle class needs a radius of at least 1 voxel, a share above 0 and a spread in [0, 1]");
+  if (!(c.meanRadius >= 1 && c.share > 0 && c.share <= 1 && c.radiusSpread >= 0 && c.radiusSpread <= 1))
+    throw InputError("each particle class needs a radius of at least 1 voxel, a share in (0, 1] and a spread in [0, 1]");
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the
   // other axes by flatten^(-1/3). A periodic volume must hold the longest particle with room to
   // spare, or it would touch its own image.

@@ -13,6 +13,8 @@ TEST(Random, DerivedStreamsAreDistinctAndRepeatable) {
   EXPECT_EQ(seeds.size(), 1000u);
   EXPECT_EQ(deriveSeed(7, 3), deriveSeed(7, 3));
   EXPECT_NE(deriveSeed(7, 3), deriveSeed(8, 3));
+  EXPECT_EQ(deriveSeed(7, 1, 2, 3), deriveSeed(deriveSeed(deriveSeed(7, 1), 2), 3));
+  EXPECT_NE(deriveSeed(7, 1, 2), deriveSeed(7, 2, 1));
 }
 
 // The same numbers on every build, compiler and standard library: volumes are reproducible from

@@ -124,6 +124,15 @@ TEST(SegmentationStatistics, OnlyBorderParticlesStillGiveAHistogram) {
   for (int c : stats.histogram.counts) total += c;
   EXPECT_EQ(total, 2);
   EXPECT_EQ(stats.sizePairs.size(), 2u);
+  // Every statistic (histogram, compare's photo areas and shapes) counts the same particles.
+  EXPECT_EQ(statisticalParticles(stats.particles), (std::vector<std::size_t>{0, 1}));
+}
+
+TEST(SegmentationStatistics, StatisticalParticlesLeaveBorderOnesOutWhenOthersExist) {
+  const ExemplarStats stats = analyzeBlocks({{{0, 0, 10, 10}, kRed}, {{30, 20, 10, 10}, kRed}}, {80, 60}, kGrey);
+  ASSERT_EQ(stats.particles.size(), 2u);
+  ASSERT_TRUE(stats.particles[0].border);
+  EXPECT_EQ(statisticalParticles(stats.particles), (std::vector<std::size_t>{1}));
 }
 
 TEST(SegmentationStatistics, EqualAreasFillTheFirstBin) {
