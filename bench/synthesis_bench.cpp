@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
       if (!reportDir.empty())
         std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json")
-            << solidtex::synthesisReport(o, r.statistics, rgb.cols, rgb.rows).dump(2);
+            << solidtex::synthesisReport(o, r.statistics).dump(2);
       if (!slicesDir.empty()) writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
     }
   }

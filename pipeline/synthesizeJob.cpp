@@ -14,7 +14,8 @@
 
 namespace solidtex {
 
-nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats, int exemplarWidth, int exemplarHeight) {
+nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats) {
+  const LevelStatistics& finest = stats.levels.back();
   nlohmann::json report = {{"method", methodName(o.method)},
                            {"size", o.size},
                            {"levels", o.levels},
@@ -24,7 +25,7 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
                            {"pca_dims", o.pcaDims},
                            {"seed", o.seed},
                            {"control", bool(o.control)},
-                           {"exemplar", {{"name", o.exemplarName}, {"width", exemplarWidth}, {"height", exemplarHeight}}}};
+                           {"exemplar", {{"name", o.exemplarName}, {"width", finest.exemplarWidth}, {"height", finest.exemplarHeight}}}};
   if (o.method == Method::ChenWang) report["color_histogram_matching"] = o.colorHistogramMatching;
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < stats.levels.size(); ++l) {
@@ -89,7 +90,7 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   result.volume.metadata["command_line"] = job.commandLine;
   result.volume.metadata["seed"] = std::to_string(options.seed);
   result.volume.metadata["exemplar"] = options.exemplarName;
-  nlohmann::json report = synthesisReport(options, result.statistics, exemplar.cols, exemplar.rows);
+  nlohmann::json report = synthesisReport(options, result.statistics);
   report["solidtex_version"] = SOLIDTEX_VERSION;
   report["command"] = "synthesize";
   report["outputs"] = {{"vdb", job.output}};

@@ -21,8 +21,7 @@ struct SynthesizeJob {
 };
 
 /// The report's settings and statistics of a synthesis (snake_case keys, as every report).
-nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics, int exemplarWidth,
-                               int exemplarHeight);
+nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesize(const SynthesizeJob& job);
