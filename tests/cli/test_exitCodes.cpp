@@ -1,0 +1,115 @@
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/scratchPath.h"
+#include "voxel/vdbIO.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int exitCode = -1;
+  std::string out;
+  std::vector<std::string> errLines;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs the real executable through the shell, as a user's script would. The captured streams are
+/// named after the running test, since ctest runs tests in parallel.
+Outcome runSolidtex(const std::string& arguments) {
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path out = solidtex::test::scratchPath("cli", test + ".stdout");
+  const fs::path err = solidtex::test::scratchPath("cli", test + ".stderr");
+  const std::string command = std::string(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(command.c_str());
+  Outcome outcome;
+  outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  outcome.out = readFile(out);
+  std::istringstream lines(readFile(err));
+  for (std::string line; std::getline(lines, line);) outcome.errLines.push_back(line);
+  return outcome;
+}
+
+/// An empty folder for one test's outputs.
+fs::path emptyFolder(const std::string& name) {
+  const fs::path dir = solidtex::test::scratchPath("cli", name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+const std::string kPhoto = std::string(SOLIDTEX_DATA_DIR) + "/particles/leopard.png";
+
+/// Each command line exits with `exitCode`, says why in one line on stderr and writes nothing in `dir`.
+void expectRefused(const std::vector<std::string>& commandLines, int exitCode, const fs::path& dir) {
+  for (const std::string& arguments : commandLines) {
+    const Outcome outcome = runSolidtex(arguments);
+    EXPECT_EQ(outcome.exitCode, exitCode) << arguments;
+    ASSERT_EQ(outcome.errLines.size(), 1u) << arguments;
+    EXPECT_EQ(outcome.errLines[0].rfind("solidtex: error: ", 0), 0u) << outcome.errLines[0];
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+} // namespace
+
+TEST(ExitCodes, HelpAndVersionSucceed) {
+  const Outcome version = runSolidtex("--version");
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_FALSE(version.out.empty());
+  for (const char* command : {"analyze", "particles", "compare", "synthesize", "spaciousness", "truth"}) {
+    const Outcome help = runSolidtex(std::string(command) + " --help");
+    EXPECT_EQ(help.exitCode, 0) << command;
+    EXPECT_NE(help.out.find("--help"), std::string::npos) << command;
+    EXPECT_TRUE(help.errLines.empty()) << command;
+  }
+}
+
+TEST(ExitCodes, ACommandLineThatDoesNotParseIsTwoWithOneLine) {
+  const fs::path dir = emptyFolder("parse");
+  const std::string out = " -o " + (dir / "a.vdb").string();
+  expectRefused({"", "bake", "particles " + kPhoto + out + " --size abc",
+                 "particles " + kPhoto + " --no-such-option" + out, "particles " + kPhoto},
+                2, dir);
+}
+
+TEST(ExitCodes, AJobThatFailsIsOneWithOneLineAndNoOutput) {
+  const fs::path dir = emptyFolder("fail");
+  const std::string out = " -o " + (dir / "a.vdb").string() + " --report " + (dir / "r.json").string();
+  expectRefused({"particles " + (dir / "missing.png").string() + out, "particles " + kPhoto + out + " --size 1",
+                 "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
+                 "synthesize " + kPhoto + out + " --method none"},
+                1, dir);
+}
+
+TEST(ExitCodes, ASolidRecordsItsCommandLineAndIsTheSameAtAnyThreadCount) {
+  const fs::path dir = emptyFolder("success");
+  std::string bytes[2];
+  for (int threads : {1, 2}) {
+    const fs::path volume = dir / ("t" + std::to_string(threads) + ".vdb");
+    const Outcome outcome = runSolidtex("particles " + kPhoto + " -o " + volume.string() + " --size 24 --seed 5 --threads " +
+                                        std::to_string(threads) + " --quiet");
+    ASSERT_EQ(outcome.exitCode, 0);
+    EXPECT_TRUE(outcome.errLines.empty());
+    const auto solid = solidtex::readVdb(volume.string());
+    EXPECT_EQ(solid.metadata.at("command_line"), "solidtex particles " + kPhoto + " --size 24 --seed 5");
+    bytes[threads - 1] = readFile(volume);
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_EQ(bytes[0], bytes[1]);
+}
