@@ -14,7 +14,7 @@
 #include <tbb/task_group.h>
 
 #include "common/Error.h"
-#include "placement/detail/shapeFit.h"
+#include "placement/detail/ShapeSupply.h"
 
 namespace solidtex {
 namespace {
@@ -33,7 +33,6 @@ constexpr double kShrink = 0.85;  // particles' size per shrink step once nothin
 constexpr int kMaxShrinks = 3;
 constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
-constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
 constexpr std::uint64_t kPairStream = 0x7061697273;   // "pairs"
 
 // A (width, height) box of the photo's particles and how often 3D particles take it.
@@ -43,14 +42,7 @@ struct WeightedPair {
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
-
-// A particle made for a pair, ready to be tried at spots.
-struct ReadyShape {
-  ParticleSize size;
-  detail::FitShape fit;  ///< no voxels when the shape came out empty
-};
-
-using ShapeKey = std::array<int, 3>;  // bin, width, height
+using detail::ShapeKey;
 
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
@@ -110,148 +102,163 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options, c
   }
   if (!(options.dims == field.dims()))
     throw std::invalid_argument("placement: the options' dims differ from the spaciousness field's");
+  const BinPairs photoPairs = pairsPerBin(stats, {});
+  if (std::all_of(photoPairs.begin(), photoPairs.end(), [](const auto& pairs) { return pairs.empty(); }))
+    throw InputError("placement: the photo has no particle to take sizes from");
 }
+
+// What a phase places: particles of the sizing's shares or of the photo's, at one scale. Each phase
+// has random streams of its own (its index), so a later phase does not change an earlier one's.
+struct PhasePlan {
+  int index = 0;
+  double scale = 1;         ///< voxels per photo pixel of its particles
+  bool photoShares = true;  ///< the photo's frequencies of (width, height) pairs, else the particle weights'
+  int shrinks = 0;          ///< times the photo's sizes were shrunk by kShrink
+};
+
+// The phases in their order; each one starts when no bin of the one before fits any more.
+std::vector<PhasePlan> phasePlans(const PlacementOptions& options) {
+  const bool weighted = !options.particleWeights.empty();
+  std::vector<PhasePlan> plans{{0, options.voxelsPerPixel * (weighted ? options.sizeFactor : 1), !weighted, 0}};
+  // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
+  // small particles jams early): the photo's shares fill the rest.
+  if (weighted) plans.push_back({1, options.voxelsPerPixel, true, 0});
+  // A crowded photo (touching coins, dense gravel) can ask for more than random placement packs:
+  // the photo's shares are tried again smaller, kShrink at a time.
+  for (int shrinks = 1; shrinks <= kMaxShrinks; ++shrinks)
+    plans.push_back({shrinks + 1, options.voxelsPerPixel * std::pow(kShrink, shrinks), true, shrinks});
+  return plans;
+}
+
+// A phase's bins: their (width, height) pairs and shares, which are still open, the volumes their
+// shapes take, and the shapes themselves.
+struct Phase {
+  Phase(const PhasePlan& plan, const ExemplarStats& stats, const ParticleFactory& factory,
+        const PlacementOptions& options)
+      : plan(plan), pairs(pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights)),
+        passShare(plan.index == 0 ? kFirstPassShare : 1), shapes(factory, options.seed, plan.index, plan.scale) {
+    double total = 0;
+    for (int b = 0; b < kBins; ++b) total += share[std::size_t(b)] = totalWeight(pairs[std::size_t(b)]);
+    for (int b = 0; b < kBins; ++b) {
+      share[std::size_t(b)] = total > 0 ? share[std::size_t(b)] / total : 0;
+      open[std::size_t(b)] = share[std::size_t(b)] > 0 && !pairs[std::size_t(b)].empty();
+    }
+    estimateVolumes(factory, options.seed);
+  }
+
+  // Expected voxels of a particle of bin b: the mean of the shapes made for it so far.
+  double expectedVolume(int b) const {
+    return made[std::size_t(b)] > 0 ? std::max(1.0, madeVoxels[std::size_t(b)] / made[std::size_t(b)]) : 1.0;
+  }
+
+  const PhasePlan plan;
+  BinPairs pairs;
+  std::array<double, kBins> share{};
+  std::array<bool, kBins> open{};
+  std::array<int, kBins> made{};  ///< pilot shapes and placed particles, whose voxels madeVoxels sums
+  std::array<double, kBins> madeVoxels{};
+  std::array<std::vector<int>, kBins> failures;  ///< per pair, tries that found no spot in a row
+  bool roundUp = false;  ///< the last pass over the bins placed nothing: quotas round up
+  double passShare;      ///< of each bin's quota that a pass places
+  detail::ShapeSupply shapes;
+
+private:
+  // Expected particle volumes per bin start from a few pilot shapes of the bin and follow the
+  // shapes placed since. The largest bins' counts are set before most of their shapes exist, and
+  // every voxel they take beyond plan is taken from the smallest bin, placed last: the start must
+  // be right.
+  void estimateVolumes(const ParticleFactory& factory, std::uint64_t seed) {
+    tbb::parallel_for(0, kBins, [&](int b) {
+      const auto& binPairs = pairs[std::size_t(b)];
+      if (binPairs.empty()) return;
+      std::vector<std::size_t> all(binPairs.size());
+      std::iota(all.begin(), all.end(), 0);
+      Rng rng(deriveSeed(seed, kPilotStream + std::uint64_t(b) + std::uint64_t(plan.index * kBins)));
+      // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
+      double sum = 0, sumOfSquares = 0;
+      int n = 0;
+      while (n < kMaxPilotShapes) {
+        ++n;
+        const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
+        const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
+        const auto voxels = double(detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
+        sum += voxels;
+        sumOfSquares += voxels * voxels;
+        const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
+        if (n >= kMinPilotShapes && variance / n <= kPilotPrecision * kPilotPrecision * mean * mean) break;
+      }
+      made[std::size_t(b)] = n;
+      madeVoxels[std::size_t(b)] = sum;
+    });
+  }
+};
 
 class Placer {
 public:
   Placer(const ExemplarStats& stats, const ParticleFactory& factory, SpaciousnessField& field,
          const PlacementOptions& options)
       : stats_(stats), factory_(factory), field_(field), options_(options),
-        pairs_(pairsPerBin(stats, options.particleWeights)), rng_(deriveSeed(options.seed, kPlacementStream)),
-        pairRng_(deriveSeed(options.seed, kPairStream)),
+        rng_(deriveSeed(options.seed, kPlacementStream)), pairRng_(deriveSeed(options.seed, kPairStream)),
+        counted_(options.counted.value_or(VolumeBox{{0, 0, 0}, options.dims})),
+        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims.count()))),
         occupied_(options.dims.count()), tried_(options.dims.count()) {
-    const BinPairs photoPairs = pairsPerBin(stats, {});
-    double total = 0, photoTotal = 0;
-    for (int b = 0; b < kBins; ++b) {
-      ratio_[std::size_t(b)] = totalWeight(pairs_[std::size_t(b)]);
-      photoRatio_[std::size_t(b)] = totalWeight(photoPairs[std::size_t(b)]);
-      total += ratio_[std::size_t(b)];
-      photoTotal += photoRatio_[std::size_t(b)];
-    }
-    if (photoTotal == 0) throw InputError("placement: the photo has no particle to take sizes from");
-    for (int b = 0; b < kBins; ++b) {
-      ratio_[std::size_t(b)] /= total;
-      photoRatio_[std::size_t(b)] /= photoTotal;
-      open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0;
-    }
-    scale_ = options.voxelsPerPixel * (options.particleWeights.empty() ? 1.0 : options.sizeFactor);
-    startSizeEstimates();
     result_.dims = options.dims;
     result_.ids.assign(options.dims.count(), 0);
-    counted_ = options.counted.value_or(VolumeBox{{0, 0, 0}, options.dims});
-    targetVoxels_ = std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims.count()));
   }
 
-  // A task may still run when an exception leaves run(): wait for it, and drop its own error.
+  // The field may still be taking the last particle when an exception leaves run(): wait for it,
+  // and drop its own error, as one exception is on its way already.
   ~Placer() {
-    for (tbb::task_group* tasks : {&fieldUpdate_, &shapeAhead_}) {
-      try {
-        tasks->wait();
-      } catch (...) {  // one exception is on its way already
-      }
+    try {
+      fieldUpdate_.wait();
+    } catch (...) {
     }
   }
 
   PlacementResult run() {
     if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
+    for (const PhasePlan& plan : phasePlans(options_)) {
+      startPhase(plan);
+      if (const std::optional<std::string> reason = fillPhase()) return finish(*reason);
+    }
+    char reason[96];
+    std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
+                  stats_.areaFraction);
+    return finish(reason);
+  }
+
+private:
+  void startPhase(const PhasePlan& plan) {
+    phase_.reset();  // waits for the shape the last phase was making
+    phase_.emplace(plan, stats_, factory_, options_);
+    if (plan.shrinks == 0) return;
+    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = int(result_.particles.size());
+    result_.shrinkSteps = plan.shrinks;
+    result_.smallestScale = std::pow(kShrink, plan.shrinks);
+  }
+
+  // Passes over the phase's bins, largest first, each placing the particles a bin misses, until
+  // the fraction or the particle limit is reached (the reason is returned) or no bin fits any more.
+  std::optional<std::string> fillPhase() {
+    Phase& phase = *phase_;
     for (;;) {
       const std::size_t placedBefore = result_.particles.size();
       for (int b = kBins - 1; b >= 0; --b) {
-        while (open_[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
+        while (phase.open[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
                countedPerBin_[std::size_t(b)] < quota(b))
-          if (!attempt(b) && pairs_[std::size_t(b)].empty()) open_[std::size_t(b)] = false;
-        if (fractionReached()) return finish("area fraction reached");
-        if (limitReached()) return finish("particle limit reached");
+          if (!attempt(b) && phase.pairs[std::size_t(b)].empty()) phase.open[std::size_t(b)] = false;
+        if (fractionReached()) return "area fraction reached";
+        if (limitReached()) return "particle limit reached";
       }
       // Every quota met to the nearest particle, and still volume to fill: rounding up places more
       // (some open bin is then below its rounded-up share, and nothing is held back), so every pass
       // places a particle or closes a bin, and the loop ends.
-      roundUp_ = result_.particles.size() == placedBefore;
-      passShare_ = 1;
-      if (std::none_of(open_.begin(), open_.end(), [](bool open) { return open; })) {
-        if (topUpWithThePhotosShares() || shrinkTheRest()) continue;
-        char reason[96];
-        std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
-                      stats_.areaFraction);
-        return finish(reason);
-      }
+      phase.roundUp = result_.particles.size() == placedBefore;
+      phase.passShare = 1;
+      if (std::none_of(phase.open.begin(), phase.open.end(), [](bool open) { return open; })) return std::nullopt;
     }
   }
 
-private:
-  // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
-  // small particles jams early): once no bin of those shares fits, the photo's shares fill the rest.
-  bool topUpWithThePhotosShares() {
-    if (options_.particleWeights.empty() || phase_ > 0) return false;
-    return restartAt(1, options_.voxelsPerPixel);
-  }
-
-  // A crowded photo (touching coins, dense gravel) can ask for more than random placement packs:
-  // once nothing fits, the photo's shares are tried again smaller, kShrink at a time.
-  bool shrinkTheRest() {
-    const int shrinks = std::max(1, phase_);  // this one: phase k + 1 follows k shrinks
-    if (shrinks > kMaxShrinks) return false;
-    const int placed = int(result_.particles.size());
-    if (!restartAt(shrinks + 1, options_.voxelsPerPixel * std::pow(kShrink, shrinks))) return false;
-    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = placed;
-    result_.shrinkSteps = shrinks;
-    result_.smallestScale = std::pow(kShrink, shrinks);
-    return true;
-  }
-
-  // Every bin open again at the photo's shares, with particles of `scale` voxels per pixel and
-  // their own random streams (phase).
-  bool restartAt(int phase, double scale) {
-    keepShapeMadeAhead();  // made at the earlier sizes: dropped below
-    phase_ = phase;
-    roundUp_ = false;
-    ratio_ = photoRatio_;
-    pairs_ = pairsPerBin(stats_, {});  // pairs retired at the larger sizes get a try at these
-    shapesMade_.clear();
-    shapesKept_.clear();
-    for (auto& failures : failures_) failures.clear();
-    scale_ = scale;
-    startSizeEstimates();
-    bool any = false;
-    for (int b = 0; b < kBins; ++b) {
-      open_[std::size_t(b)] = ratio_[std::size_t(b)] > 0 && !pairs_[std::size_t(b)].empty();
-      any = any || open_[std::size_t(b)];
-    }
-    return any;
-  }
-
-  // Expected particle volumes per bin start from a few pilot shapes of the bin and follow the shapes
-  // made since. The largest bins' counts are set before most of their shapes exist, and every voxel
-  // they take beyond plan is taken from the smallest bin, placed last: the start must be right.
-  void startSizeEstimates() {
-    made_.fill(0);
-    madeVoxels_.fill(0);
-    tbb::parallel_for(0, kBins, [&](int b) {
-      const auto& pairs = pairs_[std::size_t(b)];
-      if (pairs.empty()) return;
-      std::vector<std::size_t> all(pairs.size());
-      std::iota(all.begin(), all.end(), 0);
-      Rng rng(deriveSeed(options_.seed, kPilotStream + std::uint64_t(b) + std::uint64_t(phase_ * kBins)));
-      // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
-      double sum = 0, sumOfSquares = 0;
-      int n = 0;
-      while (n < kMaxPilotShapes) {
-        ++n;
-        const WeightedPair& pair = pairs[all[drawByWeight(pairs, all, rng)]];
-        const ParticleSize size = factory_.pickDepth(pair.width, pair.height, rng);
-        const auto voxels = double(
-            factory_.make(int(scaled(size.width)), int(scaled(size.height)), int(scaled(size.depth)), rng).voxelCount());
-        sum += voxels;
-        sumOfSquares += voxels * voxels;
-        const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
-        if (n >= kMinPilotShapes && variance / n <= kPilotPrecision * kPilotPrecision * mean * mean) break;
-      }
-      made_[std::size_t(b)] = n;
-      madeVoxels_[std::size_t(b)] = sum;
-    });
-  }
-
-  double scaled(int pixels) const { return std::max(1.0, std::round(pixels * scale_)); }
   double fraction() const { return double(placedVoxels_) / double(counted_.dims.count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
@@ -262,43 +269,39 @@ private:
   // could still fill the rest: it waits (the volume must end as close to the fraction as it can).
   bool overfills(int b) const {
     const double missing = targetVoxels_ - double(placedVoxels_);
-    if (roundUp_ || expectedVolume(b) <= 2 * missing) return false;  // after a pass that placed nothing, anything goes
+    if (phase_->roundUp || phase_->expectedVolume(b) <= 2 * missing) return false;  // after a pass that placed nothing, anything goes
     for (int i = 0; i < b; ++i)
-      if (open_[std::size_t(i)]) return true;
+      if (phase_->open[std::size_t(i)]) return true;
     return false;
   }
 
-  // Expected voxels of a particle of bin b: the mean of the shapes made for it so far.
-  double expectedVolume(int b) const {
-    return made_[std::size_t(b)] > 0 ? std::max(1.0, madeVoxels_[std::size_t(b)] / made_[std::size_t(b)]) : 1.0;
-  }
-
-  // The count of bin b the volume should reach: with T particles in all, bin b holds ratio_b T, and T
+  // The count of bin b the volume should reach: with T particles in all, bin b holds share_b T, and T
   // is chosen so that the open bins' missing particles fill the missing volume. Rounded to the
   // nearest: rounding every bin up would overfill the volume by half a particle of each large bin
   // before the smallest bin, which comes last, gets its share. The first pass over the bins places
   // kFirstPassShare of each; the second, with the volumes the shapes really took, the rest, so that
   // the luck of the shapes spreads over every bin instead of landing on the smallest alone.
   int quota(int b) const {
+    const Phase& phase = *phase_;
     double missing = targetVoxels_ - double(placedVoxels_), perParticle = 0;
     for (int i = 0; i < kBins; ++i)
-      if (open_[std::size_t(i)]) {
-        missing += countedPerBin_[std::size_t(i)] * expectedVolume(i);
-        perParticle += ratio_[std::size_t(i)] * expectedVolume(i);
+      if (phase.open[std::size_t(i)]) {
+        missing += countedPerBin_[std::size_t(i)] * phase.expectedVolume(i);
+        perParticle += phase.share[std::size_t(i)] * phase.expectedVolume(i);
       }
-    const double share = passShare_ * ratio_[std::size_t(b)] * missing / perParticle;
-    return int(roundUp_ ? std::ceil(share - 1e-9) : std::round(share));
+    const double share = phase.passShare * phase.share[std::size_t(b)] * missing / perParticle;
+    return int(phase.roundUp ? std::ceil(share - 1e-9) : std::round(share));
   }
 
   // Pairs of the bin in random order, by weight, until one is placed; false when none fits.
   // A pair that found no spot kFailuresToRetire times running is retired: the volume only fills, so
   // it would hardly find one later, and retrying it is where the time would go in a crowded volume.
   // The pairs are drawn from their own stream, so the pair after the one being tried is known, and
-  // its shape is made meanwhile (kept for its next turn if this one fits).
+  // its shape is made meanwhile.
   bool attempt(int bin) {
-    std::vector<WeightedPair>& pairs = pairs_[std::size_t(bin)];
+    std::vector<WeightedPair>& pairs = phase_->pairs[std::size_t(bin)];
     if (pairs.empty()) return false;
-    std::vector<int>& failures = failures_[std::size_t(bin)];
+    std::vector<int>& failures = phase_->failures[std::size_t(bin)];
     failures.resize(pairs.size(), 0);
     std::vector<std::size_t>& untried = untried_;
     untried.resize(pairs.size());
@@ -312,7 +315,7 @@ private:
     bool placed = false;
     for (std::optional<std::size_t> pair = drawUntried(); pair && !placed;) {
       const std::optional<std::size_t> next = untried.empty() ? std::nullopt : std::optional(drawUntried());
-      if (next) makeAhead(pairs[*next], bin);
+      if (next) phase_->shapes.makeAhead({bin, pairs[*next].width, pairs[*next].height});
       placed = tryPair(pairs[*pair], bin);
       if (placed) {
         failures[*pair] = 0;
@@ -324,7 +327,7 @@ private:
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
-        shapesKept_.erase({bin, pairs[i].width, pairs[i].height});
+        phase_->shapes.forget({bin, pairs[i].width, pairs[i].height});
         pairs.erase(pairs.begin() + std::ptrdiff_t(i));
         failures.erase(failures.begin() + std::ptrdiff_t(i));
       }
@@ -332,44 +335,8 @@ private:
   }
 
   bool tryPair(const WeightedPair& pair, int bin) {
-    const ReadyShape shape = takeShape({bin, pair.width, pair.height});
+    const detail::ReadyShape shape = phase_->shapes.take({bin, pair.width, pair.height});
     return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
-  }
-
-  // The n-th shape of a pair comes from its own stream (seed, phase, bin, pair, n), whenever and
-  // wherever it is made; a pair's shapes are taken in that order.
-  ReadyShape makeShape(const ShapeKey& key, std::uint64_t n) const {
-    Rng rng(deriveSeed(options_.seed, kShapeStream + std::uint64_t(phase_), key[0], key[1], key[2], n));
-    ReadyShape shape;
-    shape.size = factory_.pickDepth(key[1], key[2], rng);
-    const VoxelShape voxels =
-        factory_.make(int(scaled(shape.size.width)), int(scaled(shape.size.height)), int(scaled(shape.size.depth)), rng);
-    if (voxels.voxelCount() > 0) shape.fit = detail::prepareShape(voxels);
-    return shape;
-  }
-
-  // Starts making the pair's next shape on another thread, unless one is kept for it already.
-  void makeAhead(const WeightedPair& pair, int bin) {
-    keepShapeMadeAhead();
-    const ShapeKey key{bin, pair.width, pair.height};
-    if (shapesKept_.count(key)) return;
-    ahead_.key = key;
-    shapeAhead_.run([this, key, n = shapesMade_[key]++] { ahead_.shape = makeShape(key, n); });
-  }
-
-  void keepShapeMadeAhead() {
-    shapeAhead_.wait();
-    if (ahead_.key) shapesKept_.emplace(*ahead_.key, std::move(ahead_.shape));
-    ahead_.key.reset();
-  }
-
-  ReadyShape takeShape(const ShapeKey& key) {
-    if (ahead_.key == key) keepShapeMadeAhead();
-    const auto kept = shapesKept_.find(key);
-    if (kept == shapesKept_.end()) return makeShape(key, shapesMade_[key]++);
-    ReadyShape shape = std::move(kept->second);
-    shapesKept_.erase(kept);
-    return shape;
   }
 
   // Uniform draws random spots that may hold the shape; best fit (paper 3.7), and uniform once its
@@ -420,21 +387,21 @@ private:
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
     fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
-    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), scale_});
+    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += counted;
     // A particle counts by its share inside the counted box: the margin's walls keep large particles
     // out of a wider band than small ones, and would otherwise crowd them into the box.
     countedPerBin_[std::size_t(bin)] += double(counted) / double(shape.voxels.size());
     // Placed shapes only: in a crowded volume the large shapes of a bin fail more often.
-    ++made_[std::size_t(bin)];
-    madeVoxels_[std::size_t(bin)] += double(shape.voxels.size());
+    ++phase_->made[std::size_t(bin)];
+    phase_->madeVoxels[std::size_t(bin)] += double(shape.voxels.size());
     if (options_.progress && id % kProgressEvery == 0) options_.progress(fraction(), id);
   }
 
   PlacementResult finish(const std::string& reason) {
     fieldUpdate_.wait();
-    shapeAhead_.wait();
+    phase_.reset();
     result_.stopReason = reason;
     result_.volumeFraction = fraction();
     const auto placed = double(result_.particles.size());
@@ -448,34 +415,19 @@ private:
   const ParticleFactory& factory_;
   SpaciousnessField& field_;
   const PlacementOptions& options_;
-  BinPairs pairs_;
-  std::map<ShapeKey, std::uint64_t> shapesMade_;  ///< shapes made (or being made) per pair
-  std::array<std::vector<int>, kBins> failures_;  ///< per pair of pairs_, tries that found no spot in a row
   Rng rng_;      ///< best-fit draws
   Rng pairRng_;  ///< the order pairs are tried in
-  std::array<double, kBins> ratio_{}, photoRatio_{}, madeVoxels_{};
-  std::array<int, kBins> made_{};
-  std::array<bool, kBins> open_{};
-  int phase_ = 0;  ///< 0: the sizing's shares; 1: topped up with the photo's; 2 on: shrunk phase_ - 1 times
-  bool roundUp_ = false;
-  double passShare_ = kFirstPassShare;
-  double scale_ = 1;  ///< voxels per photo pixel of the particles made now
-  VolumeBox counted_;            ///< where the fraction and the particles per bin are counted
-  std::array<double, kBins> countedPerBin_{};  ///< particles placed, each by its share inside counted_
+  VolumeBox counted_;                          ///< where the fraction and the particles per bin are counted
   double targetVoxels_ = 0;
-  std::size_t placedVoxels_ = 0;  ///< inside counted_
+  std::size_t placedVoxels_ = 0;               ///< inside counted_
+  std::array<double, kBins> countedPerBin_{};  ///< particles placed in every phase, each by its share inside counted_
   PlacementResult result_;
   detail::VoxelBits occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
   detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
   std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
-  // Last, so that the tasks end before what they read is gone.
-  std::map<ShapeKey, ReadyShape> shapesKept_;  ///< made ahead, not taken yet
-  struct {
-    std::optional<ShapeKey> key;
-    ReadyShape shape;
-  } ahead_;  ///< the shape shapeAhead_ makes, for the pair `key`
-  tbb::task_group shapeAhead_;
+  std::optional<Phase> phase_;
+  // Last, so that the task ends before what it reads is gone.
   std::vector<Voxel> volumeVoxels_;  ///< the last particle's, read by fieldUpdate_
   tbb::task_group fieldUpdate_;
 };
