@@ -1,0 +1,113 @@
+#include "validation/evaluateSpaciousnessFields.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "common/Random.h"
+#include "common/secondsSince.h"
+#include "placement/exactSpaciousness.h"
+
+namespace solidtex {
+namespace {
+
+constexpr PlacerKind kKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay};
+
+// Each particle's voxels, in id order: the order they were placed in.
+std::vector<std::vector<Voxel>> voxelsPerParticle(const Dims& dims, const std::vector<std::int32_t>& ids) {
+  const std::int32_t count = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
+  std::vector<std::vector<Voxel>> out(std::size_t(std::max(count, 0)));
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] > 0) out[std::size_t(ids[i] - 1)].push_back(dims.voxel(i));
+  return out;
+}
+
+// The smallest exact value of at least r over all voxels: where an exact best fit goes.
+std::optional<double> exactBestFit(const std::vector<float>& exact, double r) {
+  double best = INFINITY;
+  for (const float e : exact)
+    if (e >= r - 1e-6) best = std::min(best, double(e));
+  return std::isfinite(best) ? std::optional(best) : std::nullopt;
+}
+
+double largestCandidate(const std::vector<std::pair<Voxel, float>>& candidates) {
+  float largest = 0;
+  for (const auto& [v, value] : candidates) largest = std::max(largest, value);
+  return largest;
+}
+
+} // namespace
+
+ErrorSummary summarizeErrors(std::vector<double> errors) {
+  ErrorSummary summary;
+  summary.count = errors.size();
+  if (errors.empty()) return summary;
+  double sum = 0, sumAbs = 0;
+  summary.maxError = *std::max_element(errors.begin(), errors.end());
+  for (double& e : errors) {
+    sum += e;
+    sumAbs += std::abs(e);
+    e = std::abs(e);
+  }
+  const std::size_t p95 = std::min(errors.size() - 1, std::size_t(0.95 * double(errors.size())));
+  std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(p95), errors.end());
+  const double n = double(errors.size());
+  summary.meanError = sum / n;
+  summary.meanAbsError = sumAbs / n;
+  summary.p95AbsError = errors[p95];
+  summary.maxAbsError = *std::max_element(errors.begin(), errors.end());
+  return summary;
+}
+
+SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::vector<std::int32_t>& ids,
+                                                  float radiusCap, std::uint64_t seed,
+                                                  const std::function<void(const std::string&)>& progress) {
+  const auto tell = [&](const std::string& step) {
+    if (progress) progress(step);
+  };
+  const auto particles = voxelsPerParticle(dims, ids);
+  SpaciousnessEvaluation evaluation;
+  std::vector<std::unique_ptr<SpaciousnessField>> built;
+  for (const PlacerKind kind : kKinds) {
+    tell(std::string("building the ") + placerName(kind) + " field");
+    const auto start = std::chrono::steady_clock::now();
+    built.push_back(makeSpaciousnessField(kind, dims, radiusCap));
+    for (const auto& voxels : particles) built.back()->insert(voxels);
+    evaluation.fields.push_back({kind, secondsSince(start)});
+  }
+  tell("exact distances");
+  const auto exactStart = std::chrono::steady_clock::now();
+  const std::vector<float> exact = exactSpaciousness(dims, ids, radiusCap);
+  evaluation.exactSeconds = secondsSince(exactStart);
+
+  Rng rng(deriveSeed(seed, 0x5Ac3));
+  const std::vector<std::pair<Voxel, float>> circumcentres = built.back()->candidates();
+  evaluation.circumcentres = circumcentres.size();
+  evaluation.largestCircumsphereCandidate = largestCandidate(circumcentres);
+  // Best fit is asked for balls up to the largest that still fits anywhere.
+  const double largest = *std::max_element(exact.begin(), exact.end());
+  evaluation.largestExactEmptyBall = largest;
+  const std::vector<double> radii = {0.25 * largest, 0.5 * largest, 0.75 * largest, largest};
+  for (std::size_t f = 0; f < built.size(); ++f) {
+    SpaciousnessField& field = *built[f];
+    FieldEvaluation& result = evaluation.fields[f];
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      if (ids[i] == 0) result.freeVoxelErrors.push_back(double(field.at(dims.voxel(i))) - exact[i]);
+    const bool ranksCandidates = result.kind == PlacerKind::Delaunay;
+    for (const auto& [v, value] : circumcentres)
+      result.circumcentreErrors.push_back(double(ranksCandidates ? value : field.at(v)) - exact[dims.index(v)]);
+    for (const double r : radii) {
+      BestFitCheck check{r, exactBestFit(exact, r)};
+      const std::vector<Voxel> spot = field.bestFit(float(r), 1, rng);
+      if (!spot.empty()) check.exactAtSpot = double(exact[dims.index(spot[0])]);
+      check.agrees = check.exactAtSpot ? *check.exactAtSpot >= r - field.slack() - 1e-6 &&
+                                             (!check.exactBestFit || *check.exactAtSpot - *check.exactBestFit <= 1.0)
+                                       : !check.exactBestFit;
+      result.bestFits.push_back(check);
+    }
+  }
+  return evaluation;
+}
+
+} // namespace solidtex
