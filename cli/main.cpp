@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
   CLI::App app{"solidtex: one photo of a material in, a 3D solid texture (OpenVDB) out"};
   app.set_version_flag("--version", SOLIDTEX_VERSION);
   app.require_subcommand(1);
-  const std::string commandLine = solidtex::cli::volumeCommandLine({argv + 1, argv + argc});
+  const std::string commandLine = solidtex::cli::volumeCommandLine({argv + std::min(argc, 1), argv + argc});
   const std::map<std::string, solidtex::cli::Action> actions = {
       {"analyze", solidtex::cli::addAnalyzeCommand(app)},
       {"particles", solidtex::cli::addParticlesCommand(app, commandLine)},

@@ -49,24 +49,21 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   placementOptions.maxParticles = job.particles;
   auto placer = makeSpaciousnessField(PlacerKind::Edt, dims, cap);
   const PlacementResult placement = placeLargestFirst(stats, factory, *placer, placementOptions);
-  const SpaciousnessEvaluation evaluation = evaluateSpaciousnessFields(
+  SpaciousnessEvaluation evaluation = evaluateSpaciousnessFields(
       dims, placement.ids, cap, job.seed, [&](const std::string& step) { progress.update(step); });
   progress.done();
 
   SpaciousnessErrors errors;
   nlohmann::json fields = nlohmann::json::object();
-  for (const FieldEvaluation& field : evaluation.fields) {
+  for (FieldEvaluation& field : evaluation.fields) {
     nlohmann::json bestFits = nlohmann::json::array();
     for (const BestFitCheck& check : field.bestFits) bestFits.push_back(toJson(check));
     fields[placerName(field.kind)] = {{"seconds", field.seconds},
-                                      {"all_voxels", toJson(summarizeErrors(field.freeVoxelErrors))},
-                                      {"circumcentres", toJson(summarizeErrors(field.circumcentreErrors))},
+                                      {"all_voxels", toJson(field.freeVoxels)},
+                                      {"circumcentres", toJson(field.circumcentres)},
                                       {"best_fit", bestFits}};
-    // Delaunay's at() is a nearest-vertex bound; what it adds is its circumcentre candidates.
-    if (field.kind == PlacerKind::Delaunay)
-      errors.push_back({"delaunay (circumcentres)", field.circumcentreErrors, field.seconds});
-    else
-      errors.push_back({placerName(field.kind), field.freeVoxelErrors, field.seconds});
+    const std::string name = field.kind == PlacerKind::Delaunay ? "delaunay (circumcentres)" : placerName(field.kind);
+    errors.push_back({name, std::move(field.errors), field.seconds});
   }
   nlohmann::json report = {{"photo", job.photo},
                            {"dims", {dims.x, dims.y, dims.z}},

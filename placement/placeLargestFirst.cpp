@@ -9,12 +9,14 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include "common/Error.h"
 #include "placement/detail/ShapeSupply.h"
+#include "placement/detail/shapeFit.h"
 
 namespace solidtex {
 namespace {
@@ -107,8 +109,9 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options, c
     throw InputError("placement: the photo has no particle to take sizes from");
 }
 
-// What a phase places: particles of the sizing's shares or of the photo's, at one scale. Each phase
-// has random streams of its own (its index), so a later phase does not change an earlier one's.
+// What a phase places: particles of the sizing's shares or of the photo's, at one scale. Its shapes
+// and size estimates come from streams of its own (its index); the order of pairs and spots is
+// drawn from streams that run on through the phases.
 struct PhasePlan {
   int index = 0;
   double scale = 1;         ///< voxels per photo pixel of its particles
@@ -229,7 +232,7 @@ public:
 
 private:
   void startPhase(const PhasePlan& plan) {
-    phase_.reset();  // waits for the shape the last phase was making
+    if (phase_) phase_->shapes.finish();
     phase_.emplace(plan, stats_, factory_, options_);
     if (plan.shrinks == 0) return;
     if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = int(result_.particles.size());
@@ -401,7 +404,7 @@ private:
 
   PlacementResult finish(const std::string& reason) {
     fieldUpdate_.wait();
-    phase_.reset();
+    if (phase_) phase_->shapes.finish();
     result_.stopReason = reason;
     result_.volumeFraction = fraction();
     const auto placed = double(result_.particles.size());

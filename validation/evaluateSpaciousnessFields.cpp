@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "common/Random.h"
 #include "common/secondsSince.h"
@@ -63,6 +64,8 @@ ErrorSummary summarizeErrors(std::vector<double> errors) {
 SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::vector<std::int32_t>& ids,
                                                   float radiusCap, std::uint64_t seed,
                                                   const std::function<void(const std::string&)>& progress) {
+  if (dims.count() == 0 || ids.size() != dims.count())
+    throw std::invalid_argument("evaluateSpaciousnessFields: the ids must be one per voxel of a non-empty volume");
   const auto tell = [&](const std::string& step) {
     if (progress) progress(step);
   };
@@ -88,17 +91,23 @@ SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::v
   // Best fit is asked for balls up to the largest that still fits anywhere.
   const double largest = *std::max_element(exact.begin(), exact.end());
   evaluation.largestExactEmptyBall = largest;
-  const std::vector<double> radii = {0.25 * largest, 0.5 * largest, 0.75 * largest, largest};
+  std::vector<BestFitCheck> exactFits;
+  for (const double share : {0.25, 0.5, 0.75, 1.0}) exactFits.push_back({share * largest, exactBestFit(exact, share * largest)});
+  tell("measuring the fields");
   for (std::size_t f = 0; f < built.size(); ++f) {
     SpaciousnessField& field = *built[f];
     FieldEvaluation& result = evaluation.fields[f];
+    std::vector<double> free, atCentres;
     for (std::size_t i = 0; i < exact.size(); ++i)
-      if (ids[i] == 0) result.freeVoxelErrors.push_back(double(field.at(dims.voxel(i))) - exact[i]);
+      if (ids[i] == 0) free.push_back(double(field.at(dims.voxel(i))) - exact[i]);
     const bool ranksCandidates = result.kind == PlacerKind::Delaunay;
     for (const auto& [v, value] : circumcentres)
-      result.circumcentreErrors.push_back(double(ranksCandidates ? value : field.at(v)) - exact[dims.index(v)]);
-    for (const double r : radii) {
-      BestFitCheck check{r, exactBestFit(exact, r)};
+      atCentres.push_back(double(ranksCandidates ? value : field.at(v)) - exact[dims.index(v)]);
+    result.freeVoxels = summarizeErrors(free);
+    result.circumcentres = summarizeErrors(atCentres);
+    result.errors = std::move(ranksCandidates ? atCentres : free);
+    for (BestFitCheck check : exactFits) {
+      const double r = check.radius;
       const std::vector<Voxel> spot = field.bestFit(float(r), 1, rng);
       if (!spot.empty()) check.exactAtSpot = double(exact[dims.index(spot[0])]);
       check.agrees = check.exactAtSpot ? *check.exactAtSpot >= r - field.slack() - 1e-6 &&

@@ -31,12 +31,15 @@ struct BestFitCheck {
 
 struct FieldEvaluation {
   PlacerKind kind = PlacerKind::Edt;
-  double seconds = 0;                      ///< to build the field from the scene's particles
-  std::vector<double> freeVoxelErrors;     ///< at every voxel no particle covers
+  double seconds = 0;          ///< to build the field from the scene's particles
+  ErrorSummary freeVoxels;     ///< at every voxel no particle covers
   /// At the Delaunay field's circumcentre candidates; Delaunay's own are the values its best fit
   /// ranks by, the others' their at().
-  std::vector<double> circumcentreErrors;
-  std::vector<BestFitCheck> bestFits;      ///< at a quarter, half, three quarters and all of the largest empty ball
+  ErrorSummary circumcentres;
+  /// The errors that show what the field offers: at the free voxels, for Delaunay (whose at() is a
+  /// nearest-vertex bound) at its circumcentres.
+  std::vector<double> errors;
+  std::vector<BestFitCheck> bestFits;  ///< at a quarter, half, three quarters and all of the largest empty ball
 };
 
 struct SpaciousnessEvaluation {
@@ -50,8 +53,9 @@ struct SpaciousnessEvaluation {
 /// Count, means and extremes of signed errors; the 95th percentile of their absolute values.
 ErrorSummary summarizeErrors(std::vector<double> errors);
 
-/// Builds every field from the particles of `ids` (0 free, 1..P in the order they were placed) and
-/// measures it against exactSpaciousness. `progress` is told each step's name; it may be empty.
+/// Builds every field from the particles of `ids` (0 free, 1..P in the order they were placed; one
+/// per voxel of a non-empty `dims`) and measures it against exactSpaciousness. `progress` is told
+/// each step's name; it may be empty.
 SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::vector<std::int32_t>& ids,
                                                   float radiusCap, std::uint64_t seed,
                                                   const std::function<void(const std::string&)>& progress = {});

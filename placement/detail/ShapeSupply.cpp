@@ -19,8 +19,8 @@ VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, 
 ShapeSupply::ShapeSupply(const ParticleFactory& factory, std::uint64_t seed, int phase, double scale)
     : factory_(factory), seed_(seed), phase_(phase), scale_(scale) {}
 
-// The shape being made may still be on its way when an exception unwinds the placement: wait for
-// it, and drop its own error, as one exception is on its way already.
+// Reached without finish() only when an exception unwinds the placement: the shape being made may
+// still be on its way, and its own error is dropped, as one exception is on its way already.
 ShapeSupply::~ShapeSupply() {
   try {
     aheadTask_.wait();

@@ -42,6 +42,8 @@ public:
   ReadyShape take(const ShapeKey& key);
   /// Drops what is kept for a pair that will not be tried again.
   void forget(const ShapeKey& key) { kept_.erase(key); }
+  /// Waits for the shape being made; its error, if any, is thrown here.
+  void finish() { aheadTask_.wait(); }
 
 private:
   ReadyShape make(const ShapeKey& key, std::uint64_t n) const;

@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/scratchPath.h"
 #include "voxel/vdbIO.h"
 
 namespace fs = std::filesystem;
@@ -29,13 +28,21 @@ std::string readFile(const fs::path& path) {
   return text.str();
 }
 
+/// A path in this build's scratch folder.
+fs::path scratch(const std::string& name) {
+  fs::create_directories(SOLIDTEX_CLI_SCRATCH);
+  return fs::path(SOLIDTEX_CLI_SCRATCH) / name;
+}
+
+/// A path as one shell word.
+std::string shellWord(const fs::path& path) { return "'" + path.string() + "'"; }
+
 /// Runs the real executable through the shell, as a user's script would. The captured streams are
 /// named after the running test, since ctest runs tests in parallel.
 Outcome runSolidtex(const std::string& arguments) {
   const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const fs::path out = solidtex::test::scratchPath("cli", test + ".stdout");
-  const fs::path err = solidtex::test::scratchPath("cli", test + ".stderr");
-  const std::string command = std::string(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+  const fs::path out = scratch(test + ".stdout"), err = scratch(test + ".stderr");
+  const std::string command = shellWord(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + shellWord(out) + " 2>" + shellWord(err);
   const int status = std::system(command.c_str());
   Outcome outcome;
   outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -47,13 +54,14 @@ Outcome runSolidtex(const std::string& arguments) {
 
 /// An empty folder for one test's outputs.
 fs::path emptyFolder(const std::string& name) {
-  const fs::path dir = solidtex::test::scratchPath("cli", name);
+  const fs::path dir = scratch(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
 }
 
-const std::string kPhoto = std::string(SOLIDTEX_DATA_DIR) + "/particles/leopard.png";
+const std::string kPhotoPath = std::string(SOLIDTEX_DATA_DIR) + "/particles/leopard.png";
+const std::string kPhoto = shellWord(kPhotoPath);
 
 /// Each command line exits with `exitCode`, says why in one line on stderr and writes nothing in `dir`.
 void expectRefused(const std::vector<std::string>& commandLines, int exitCode, const fs::path& dir) {
@@ -82,7 +90,7 @@ TEST(ExitCodes, HelpAndVersionSucceed) {
 
 TEST(ExitCodes, ACommandLineThatDoesNotParseIsTwoWithOneLine) {
   const fs::path dir = emptyFolder("parse");
-  const std::string out = " -o " + (dir / "a.vdb").string();
+  const std::string out = " -o " + shellWord(dir / "a.vdb");
   expectRefused({"", "bake", "particles " + kPhoto + out + " --size abc",
                  "particles " + kPhoto + " --no-such-option" + out, "particles " + kPhoto},
                 2, dir);
@@ -90,8 +98,8 @@ TEST(ExitCodes, ACommandLineThatDoesNotParseIsTwoWithOneLine) {
 
 TEST(ExitCodes, AJobThatFailsIsOneWithOneLineAndNoOutput) {
   const fs::path dir = emptyFolder("fail");
-  const std::string out = " -o " + (dir / "a.vdb").string() + " --report " + (dir / "r.json").string();
-  expectRefused({"particles " + (dir / "missing.png").string() + out, "particles " + kPhoto + out + " --size 1",
+  const std::string out = " -o " + shellWord(dir / "a.vdb") + " --report " + shellWord(dir / "r.json");
+  expectRefused({"particles " + shellWord(dir / "missing.png") + out, "particles " + kPhoto + out + " --size 1",
                  "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
                  "synthesize " + kPhoto + out + " --method none"},
                 1, dir);
@@ -102,12 +110,12 @@ TEST(ExitCodes, ASolidRecordsItsCommandLineAndIsTheSameAtAnyThreadCount) {
   std::string bytes[2];
   for (int threads : {1, 2}) {
     const fs::path volume = dir / ("t" + std::to_string(threads) + ".vdb");
-    const Outcome outcome = runSolidtex("particles " + kPhoto + " -o " + volume.string() + " --size 24 --seed 5 --threads " +
+    const Outcome outcome = runSolidtex("particles " + kPhoto + " -o " + shellWord(volume) + " --size 24 --seed 5 --threads " +
                                         std::to_string(threads) + " --quiet");
     ASSERT_EQ(outcome.exitCode, 0);
     EXPECT_TRUE(outcome.errLines.empty());
     const auto solid = solidtex::readVdb(volume.string());
-    EXPECT_EQ(solid.metadata.at("command_line"), "solidtex particles " + kPhoto + " --size 24 --seed 5");
+    EXPECT_EQ(solid.metadata.at("command_line"), "solidtex particles " + kPhotoPath + " --size 24 --seed 5");
     bytes[threads - 1] = readFile(volume);
   }
   EXPECT_FALSE(bytes[0].empty());

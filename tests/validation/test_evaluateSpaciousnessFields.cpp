@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "validation/evaluateSpaciousnessFields.h"
 
@@ -30,14 +31,16 @@ TEST(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds)
         ids[dims.index(Voxel{x, y, z})] = 1;
         ids[dims.index(Voxel{x + 10, y + 12, z + 8})] = 2;
       }
+  EXPECT_THROW(evaluateSpaciousnessFields(dims, {}, 12, 3), std::invalid_argument);
   const SpaciousnessEvaluation e = evaluateSpaciousnessFields(dims, ids, 12, 3);
   ASSERT_EQ(e.fields.size(), 4u);
   EXPECT_GT(e.largestExactEmptyBall, 4);
   EXPECT_GT(e.circumcentres, 0u);
   for (const FieldEvaluation& field : e.fields) {
-    EXPECT_EQ(field.freeVoxelErrors.size(), dims.count() - 2 * 125);
+    EXPECT_EQ(field.freeVoxels.count, dims.count() - 2 * 125);
+    EXPECT_EQ(field.circumcentres.count, e.circumcentres);
     ASSERT_EQ(field.bestFits.size(), 4u);
-    const ErrorSummary free = summarizeErrors(field.freeVoxelErrors);
+    const ErrorSummary& free = field.freeVoxels;
     switch (field.kind) {
       case PlacerKind::Edt:
       case PlacerKind::Brute:
@@ -49,7 +52,8 @@ TEST(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds)
         EXPECT_LE(free.maxAbsError, e.largestExactEmptyBall * (1 - 1 / std::sqrt(3.0)) + 1e-4);
         break;
       case PlacerKind::Delaunay:  // candidates exceed the exact value by at most the slack, a voxel
-        EXPECT_LE(summarizeErrors(field.circumcentreErrors).maxError, 1 + 1e-4);
+        EXPECT_LE(field.circumcentres.maxError, 1 + 1e-4);
+        EXPECT_EQ(field.errors.size(), e.circumcentres);
         EXPECT_LE(e.largestCircumsphereCandidate, e.largestExactEmptyBall + 1 + 1e-4);
         break;
     }
