@@ -5,8 +5,8 @@
 //   energy_diagnostics chen-wang SIZE EXEMPLAR.png...   chen-wang's volume as is and blurred (sigma 0.5-1.0)
 //   energy_diagnostics kopf SIZE EXEMPLAR.png...        kopf's volume as is and snapped voxel by voxel to
 //                                                       the nearest exemplar colour
-// Seed 1 (the output does not depend on the thread count). Each line: E axis/oblique, the squared forms, position coverage (-1: no
-// sources), colour TV.
+// Seed 1 (the output does not depend on the thread count). Each line: E axis/oblique, the squared forms,
+// position coverage (-1: no sources), colour TV.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -67,7 +67,8 @@ WorkVolume snap(const WorkVolume& v, const RgbImage& ex) {
     float best = 1e30f;
     for (int p = 0; p < P; ++p) {
       const float* e = ex.data.data() + 3 * std::size_t(p);
-      const float d = (c[0] - e[0]) * (c[0] - e[0]) + (c[1] - e[1]) * (c[1] - e[1]) + (c[2] - e[2]) * (c[2] - e[2]);
+      const float d =
+          (c[0] - e[0]) * (c[0] - e[0]) + (c[1] - e[1]) * (c[1] - e[1]) + (c[2] - e[2]) * (c[2] - e[2]);
       if (d < best) best = d, bp = p;
     }
     std::copy(ex.data.data() + 3 * std::size_t(bp), ex.data.data() + 3 * std::size_t(bp) + 3, o.at(i));
@@ -76,7 +77,7 @@ WorkVolume snap(const WorkVolume& v, const RgbImage& ex) {
   return o;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
@@ -96,9 +97,11 @@ int main(int argc, char** argv) {
     const RgbImage ex = toRgbImage(rgb);
     auto show = [&](const std::string& what, const WorkVolume& w) {
       const SliceEnergy e = sliceEnergy(w, ex);
-      const double coverage = w.source.empty() ? -1 : positionHistogramStats(w.source, ex.pixelCount()).coverage;
-      std::printf("%s %s %s E %.4f %.4f E2 %.5f %.5f coverage %.3f colourTV %.3f\n", argv[a], mode.c_str(), what.c_str(), e.axis, e.oblique,
-                  e.axisSquared, e.obliqueSquared, coverage, colorHistogramDistance(w.rgb.data(), w.count(), ex));
+      const double coverage =
+          w.source.empty() ? -1 : positionHistogramStats(w.source, ex.pixelCount()).coverage;
+      std::printf("%s %s %s E %.4f %.4f E2 %.5f %.5f coverage %.3f colourTV %.3f\n", argv[a], mode.c_str(),
+                  what.c_str(), e.axis, e.oblique, e.axisSquared, e.obliqueSquared, coverage,
+                  colorHistogramDistance(w.rgb.data(), w.count(), ex));
       std::fflush(stdout);
     };
     if (mode == "baselines") {
@@ -118,7 +121,8 @@ int main(int argc, char** argv) {
       WorkVolume x = r;
       for (int z = 0; z < size; ++z)
         for (int y = 0; y < size; ++y)
-          for (int xx = 0; xx < size; ++xx) x.source[x.index(xx, y, z)] = (y % ex.height) * ex.width + (xx % ex.width);
+          for (int xx = 0; xx < size; ++xx)
+            x.source[x.index(xx, y, z)] = (y % ex.height) * ex.width + (xx % ex.width);
       colorsFromSources(x, ex);
       show("exemplar-extruded-along-z", x);
       continue;

@@ -16,7 +16,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace solidtex;
@@ -31,15 +31,16 @@ int main(int argc, char** argv) {
     const double poolMs = millisecondsSince(start);
     std::size_t triangles = 0;
     for (const HullMesh& h : factory.hulls()) triangles += h.triangles.size();
-    std::printf("smoothing %.2f: pool of %zu hulls %.0f ms, %.0f triangles per hull\n", radius, factory.hulls().size(),
-                poolMs, double(triangles) / double(factory.hulls().size()));
+    std::printf("smoothing %.2f: pool of %zu hulls %.0f ms, %.0f triangles per hull\n", radius,
+                factory.hulls().size(), poolMs, double(triangles) / double(factory.hulls().size()));
     for (const int side : {20, 60}) {
       Rng rng(1);
       const int count = side == 20 ? 2000 : 200;
       std::size_t voxels = 0;
       const auto makeStart = std::chrono::steady_clock::now();
       for (int i = 0; i < count; ++i) voxels += factory.make(side, side, side, rng).voxelCount();
-      std::printf("  make %d^3: %.3f ms each, %.0f%% of the box filled\n", side, millisecondsSince(makeStart) / count,
+      std::printf("  make %d^3: %.3f ms each, %.0f%% of the box filled\n", side,
+                  millisecondsSince(makeStart) / count,
                   100.0 * double(voxels) / count / (side * side * side));
     }
   }

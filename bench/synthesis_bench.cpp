@@ -39,14 +39,15 @@ void writeSlices(const solidtex::SolidVolume& v, const std::string& path) {
         if (a == 1) x = i, y = n / 2, z = j;
         const auto& c = v.color[v.dims.index(x, y, z)];
         cv::Vec3b& p = img.at<cv::Vec3b>(j, a * (n + 4) + i);
-        for (int k = 0; k < 3; ++k) p[2 - k] = cv::saturate_cast<uchar>(255.0f * solidtex::linearToSrgb(c[k]) + 0.5f);
+        for (int k = 0; k < 3; ++k)
+          p[2 - k] = cv::saturate_cast<uchar>(255.0f * solidtex::linearToSrgb(c[k]) + 0.5f);
       }
   const int scale = std::max(1, 256 / n);
   cv::resize(img, img, cv::Size(), scale, scale, cv::INTER_NEAREST);
   cv::imwrite(path, img);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   solidtex::SynthesisOptions base;
@@ -56,36 +57,56 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() { return std::string(argv[++i]); };
-    if (a == "--size") base.size = std::stoi(next());
-    else if (a == "--methods") methods = split(next());
-    else if (a == "--iterations") base.iterations = std::stoi(next());
-    else if (a == "--threads") base.threads = std::stoi(next());
-    else if (a == "--seed") base.seed = std::stoull(next());
-    else if (a == "--levels") base.levels = std::stoi(next());
+    if (a == "--size")
+      base.size = std::stoi(next());
+    else if (a == "--methods")
+      methods = split(next());
+    else if (a == "--iterations")
+      base.iterations = std::stoi(next());
+    else if (a == "--threads")
+      base.threads = std::stoi(next());
+    else if (a == "--seed")
+      base.seed = std::stoull(next());
+    else if (a == "--levels")
+      base.levels = std::stoi(next());
     else if (a == "--neighborhoods") {
       base.neighborhoods.clear();
       for (const auto& s : split(next())) base.neighborhoods.push_back(std::stoi(s));
-    } else if (a == "--report-dir") reportDir = next();
-    else if (a == "--slices") slicesDir = next();
-    else if (a == "--no-measure") base.measure = false;
-    else if (a == "--no-color-histogram") base.colorHistogramMatching = false;
+    } else if (a == "--report-dir")
+      reportDir = next();
+    else if (a == "--slices")
+      slicesDir = next();
+    else if (a == "--no-measure")
+      base.measure = false;
+    else if (a == "--no-color-histogram")
+      base.colorHistogramMatching = false;
     else if (a == "--choice") {
       const std::string c = next();
       using C = solidtex::ProposalChoice;
       base.choice = c == "average" ? C::NearestToAverage : c == "vote" ? C::LargestVote : C::ColorMode;
-    } else if (a == "--bandwidth") base.modeBandwidth = std::stod(next());
-    else if (a == "--reference-count") base.histogramReferenceCount = std::stod(next());
-    else if (a == "--index-reference") base.indexReferenceCount = std::stod(next());
-    else if (a == "--radius") base.coherenceRadius = std::stoi(next());
-    else if (a == "--step") base.sparseStep = std::stoi(next());
-    else if (a == "--k") base.k = std::stoi(next());
-    else if (a == "--exhaustive-below") base.exhaustiveBelow = std::stoi(next());
-    else if (a == "--exhaustive-budget") base.exhaustiveBudget = std::stod(next());
-    else if (a == "--verbose") base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
-    else exemplars.push_back(a);
+    } else if (a == "--bandwidth")
+      base.modeBandwidth = std::stod(next());
+    else if (a == "--reference-count")
+      base.histogramReferenceCount = std::stod(next());
+    else if (a == "--index-reference")
+      base.indexReferenceCount = std::stod(next());
+    else if (a == "--radius")
+      base.coherenceRadius = std::stoi(next());
+    else if (a == "--step")
+      base.sparseStep = std::stoi(next());
+    else if (a == "--k")
+      base.k = std::stoi(next());
+    else if (a == "--exhaustive-below")
+      base.exhaustiveBelow = std::stoi(next());
+    else if (a == "--exhaustive-budget")
+      base.exhaustiveBudget = std::stod(next());
+    else if (a == "--verbose")
+      base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
+    else
+      exemplars.push_back(a);
   }
-  std::printf("%-12s %-9s %5s %8s %8s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size", "E_axis", "E_obl",
-              "E2_axis", "E2_obl", "coverage", "flatness", "colorTV", "time_s", "peakMiB");
+  std::printf("%-12s %-9s %5s %8s %8s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size",
+              "E_axis", "E_obl", "E2_axis", "E2_obl", "coverage", "flatness", "colorTV", "time_s", "peakMiB");
   for (const auto& path : exemplars) {
     cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
     if (bgr.empty()) {
@@ -103,14 +124,16 @@ int main(int argc, char** argv) {
       o.exemplarName = name;
       const solidtex::SynthesisResult r = solidtex::synthesizeSolid(rgb, o);
       const solidtex::SolidQuality q = r.statistics.quality.value_or(solidtex::SolidQuality{});
-      std::printf("%-12s %-9s %5d %8.4f %8.4f %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(), m.c_str(), o.size,
-                  q.energyAxis, q.energyOblique, q.energyAxisSquared, q.energyObliqueSquared, q.positionCoverage, q.positionFlatness,
-                  q.colorHistogramDistance, r.statistics.synthesisSeconds, solidtex::peakMemoryMiB());
+      std::printf("%-12s %-9s %5d %8.4f %8.4f %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(),
+                  m.c_str(), o.size, q.energyAxis, q.energyOblique, q.energyAxisSquared,
+                  q.energyObliqueSquared, q.positionCoverage, q.positionFlatness, q.colorHistogramDistance,
+                  r.statistics.synthesisSeconds, solidtex::peakMemoryMiB());
       std::fflush(stdout);
       if (!reportDir.empty())
         std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json")
             << solidtex::synthesisReport(o, r.statistics).dump(2);
-      if (!slicesDir.empty()) writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
+      if (!slicesDir.empty())
+        writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
     }
   }
   return 0;

@@ -7,11 +7,15 @@
 namespace solidtex::cli {
 
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options) {
-  command.add_option("--mask", options.maskPath, "Mask image (white = particle) used instead of automatic segmentation")
+  command
+      .add_option("--mask", options.maskPath,
+                  "Mask image (white = particle) used instead of automatic segmentation")
       ->check(CLI::ExistingFile);
   command.add_flag("--invert", options.invert, "Swap which class the automatic segmentation calls particle");
   command.add_flag("!--no-split", options.split, "Do not split touching particles");
-  command.add_option("--min-area", options.minArea, "Drop particles smaller than this many pixels (default: scaled to the image)")
+  command
+      .add_option("--min-area", options.minArea,
+                  "Drop particles smaller than this many pixels (default: scaled to the image)")
       ->check(CLI::NonNegativeNumber);
 }
 
@@ -30,4 +34,4 @@ Action addAnalyzeCommand(CLI::App& app) {
   };
 }
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

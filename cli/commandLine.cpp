@@ -5,7 +5,8 @@
 namespace solidtex::cli {
 
 std::string volumeCommandLine(const std::vector<std::string>& arguments) {
-  const std::set<std::string> dropWithValue = {"-o", "--output", "--threads", "--report", "--preview", "--labels", "--plot"};
+  const std::set<std::string> dropWithValue = {"-o",        "--output", "--threads", "--report",
+                                               "--preview", "--labels", "--plot"};
   std::string line = "solidtex";
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& arg = arguments[i];
@@ -20,4 +21,4 @@ std::string volumeCommandLine(const std::vector<std::string>& arguments) {
   return line;
 }
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

@@ -11,4 +11,4 @@ namespace solidtex::cli {
 /// out, so that the same volume made elsewhere is the same bytes.
 std::string volumeCommandLine(const std::vector<std::string>& arguments);
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

@@ -22,4 +22,4 @@ Action addTruthCommand(CLI::App& app);
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

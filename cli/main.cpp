@@ -18,7 +18,7 @@ int fail(const std::string& message, int code) {
   return code;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"solidtex: one photo of a material in, a 3D solid texture (OpenVDB) out"};

@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "pipeline/jobSupport.h"
 #include "particles/fitHullSmoothing.h"
+#include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
 
 namespace solidtex::cli {
@@ -18,30 +18,43 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto sizing = std::make_shared<std::string>("sections");
   auto arrangement = std::make_shared<std::string>("uniform");
   auto boundary = std::make_shared<std::string>("open");
-  CLI::App* command = app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
+  CLI::App* command =
+      app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
-  auto* sizeOption = command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();
-  command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (instead of --size)")->expected(3)->excludes(sizeOption);
-  command->add_option("--scale", job->voxelsPerPixel,
-                      "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)");
-  command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")->capture_default_str();
-  command->add_option("--sizing", *sizing,
-                      "sections: particle sizes whose random sections match the photo's areas; bbox: the paper's, from 2D boxes")
+  auto* sizeOption =
+      command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();
+  command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (instead of --size)")
+      ->expected(3)
+      ->excludes(sizeOption);
+  command->add_option(
+      "--scale", job->voxelsPerPixel,
+      "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)");
+  command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")
       ->capture_default_str();
-  command->add_option("--arrangement", *arrangement,
-                      "uniform: each particle at a random spot that holds it, scattered as in most photos; "
-                      "best-fit: the paper's, the tightest spot")
+  command
+      ->add_option("--sizing", *sizing,
+                   "sections: particle sizes whose random sections match the photo's areas; bbox: the "
+                   "paper's, from 2D boxes")
       ->capture_default_str();
-  command->add_option("--boundary", *boundary,
-                      "open: the volume is cut from a larger solid, particles run through its faces; "
-                      "walls: the paper's, particles stay inside")
+  command
+      ->add_option("--arrangement", *arrangement,
+                   "uniform: each particle at a random spot that holds it, scattered as in most photos; "
+                   "best-fit: the paper's, the tightest spot")
       ->capture_default_str();
-  command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")->capture_default_str();
+  command
+      ->add_option("--boundary", *boundary,
+                   "open: the volume is cut from a larger solid, particles run through its faces; "
+                   "walls: the paper's, particles stay inside")
+      ->capture_default_str();
+  command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")
+      ->capture_default_str();
   auto smoothing = std::make_shared<std::string>("auto");
-  command->add_option("--smoothing", *smoothing,
-                      "Rounding of the hulls' edges as a share of a particle's size, 0 (the paper's sharp hulls) "
-                      "to 0.5, or auto: as round as the photo's particles")
+  command
+      ->add_option(
+          "--smoothing", *smoothing,
+          "Rounding of the hulls' edges as a share of a particle's size, 0 (the paper's sharp hulls) "
+          "to 0.5, or auto: as round as the photo's particles")
       ->capture_default_str();
   command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused (1-4096)")
       ->capture_default_str();
@@ -49,7 +62,8 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto threads = std::make_shared<int>(0);
   command->add_option("--threads", *threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
-  command->add_option("--preview", job->preview, "Folder for preview PNGs (middle and oblique slices beside the photo)");
+  command->add_option("--preview", job->preview,
+                      "Folder for preview PNGs (middle and oblique slices beside the photo)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
   return [job, size, dims, placer, sizing, arrangement, boundary, smoothing, threads] {
@@ -63,10 +77,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
     const auto report = runParticleSolid(*job);
     const auto& volume = report["volume"];
     std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
-              << volume["volume_fraction"].get<double>() << " (photo " << volume["area_fraction"].get<double>()
-              << "), " << volume["stop_reason"].get<std::string>() << '\n';
+              << volume["volume_fraction"].get<double>() << " (photo "
+              << volume["area_fraction"].get<double>() << "), " << volume["stop_reason"].get<std::string>()
+              << '\n';
     return 0;
   };
 }
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

@@ -11,18 +11,23 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   job->commandLine = commandLine;
   auto method = std::make_shared<std::string>("chen-wang");
   SynthesisOptions& o = job->synthesis;
-  CLI::App* command = app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
+  CLI::App* command =
+      app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
   command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
-  command->add_option("--method", *method, "chen-wang (histogram matching) or kopf (baseline)")->capture_default_str();
+  command->add_option("--method", *method, "chen-wang (histogram matching) or kopf (baseline)")
+      ->capture_default_str();
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
   command->add_option("--levels", o.levels, "Multi-resolution levels (1-8)")->capture_default_str();
   command->add_option("--neighborhoods", o.neighborhoods, "Neighbourhood side per level, coarsest first")
-      ->delimiter(',')->capture_default_str();
+      ->delimiter(',')
+      ->capture_default_str();
   command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
-  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")->capture_default_str();
-  command->add_option("--control", job->control, "Greyscale map the exemplar's size: brighter appears more")->check(CLI::ExistingFile);
+  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
+      ->capture_default_str();
+  command->add_option("--control", job->control, "Greyscale map the exemplar's size: brighter appears more")
+      ->check(CLI::ExistingFile);
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
@@ -36,4 +41,4 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   };
 }
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

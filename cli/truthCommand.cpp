@@ -12,15 +12,22 @@ Action addTruthCommand(CLI::App& app) {
   auto dims = std::make_shared<std::vector<int>>(std::vector<int>{640, 640, 72});
   ParticleTruthOptions& t = job->truth;
   CLI::App* command = app.add_subcommand(
-      "truth", "Make a test photo with a known 3D truth: random non-overlapping particles (ellipsoids, "
-               "superellipsoids or polytopes), small ones orange, large ones blue, and their middle section as the photo");
-  command->add_option("-o,--output", job->folder, "Folder for photo.png, truth.vdb and truth.json")->required();
+      "truth",
+      "Make a test photo with a known 3D truth: random non-overlapping particles (ellipsoids, "
+      "superellipsoids or polytopes), small ones orange, large ones blue, and their middle section as the "
+      "photo");
+  command->add_option("-o,--output", job->folder, "Folder for photo.png, truth.vdb and truth.json")
+      ->required();
   command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (periodic; the photo is X x Y)")
-      ->expected(3)->capture_default_str();
-  auto shape = std::make_shared<std::string>("ellipsoid");
-  command->add_option("--shape", *shape, "Particle shape: ellipsoid, superellipsoid or polytope (convex, 12-16 vertices)")
+      ->expected(3)
       ->capture_default_str();
-  command->add_option("--fraction", t.volumeFraction, "Volume fraction of the particles")->capture_default_str();
+  auto shape = std::make_shared<std::string>("ellipsoid");
+  command
+      ->add_option("--shape", *shape,
+                   "Particle shape: ellipsoid, superellipsoid or polytope (convex, 12-16 vertices)")
+      ->capture_default_str();
+  command->add_option("--fraction", t.volumeFraction, "Volume fraction of the particles")
+      ->capture_default_str();
   command->add_option("--small-radius", t.classes[0].meanRadius, "Median radius of the small class, voxels")
       ->capture_default_str();
   command->add_option("--large-radius", t.classes[1].meanRadius, "Median radius of the large class, voxels")
@@ -28,17 +35,22 @@ Action addTruthCommand(CLI::App& app) {
   command->add_option("--large-share", t.classes[1].share, "Share of large particles by number (0-1)")
       ->capture_default_str();
   auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
-  command->add_option("--spread", *spread, "Standard deviation of log radius (both classes)")->capture_default_str();
+  command->add_option("--spread", *spread, "Standard deviation of log radius (both classes)")
+      ->capture_default_str();
   command->add_option("--elongation", t.elongation, "Largest axis stretch of a particle (1 = no stretch)")
       ->capture_default_str();
-  command->add_option("--flatten", t.flatten,
-                      "Ratio of the smallest axis to the others, volume kept (1 = none; 0.5 = oblate 2:1)")
+  command
+      ->add_option("--flatten", t.flatten,
+                   "Ratio of the smallest axis to the others, volume kept (1 = none; 0.5 = oblate 2:1)")
       ->capture_default_str();
   command->add_option("--exponent", t.exponent, "Superellipsoid exponent p (2 = ellipsoid; larger = boxier)")
       ->capture_default_str();
-  command->add_option("--blur", t.blur, "Gaussian blur of the photo, standard deviation in pixels, before the noise")
+  command
+      ->add_option("--blur", t.blur,
+                   "Gaussian blur of the photo, standard deviation in pixels, before the noise")
       ->capture_default_str();
-  command->add_option("--noise", t.noise, "Pixel noise of the photo (sRGB standard deviation)")->capture_default_str();
+  command->add_option("--noise", t.noise, "Pixel noise of the photo (sRGB standard deviation)")
+      ->capture_default_str();
   command->add_option("--seed", t.seed, "Random seed: same seed, same truth")->capture_default_str();
   return [job, dims, spread, shape] {
     ParticleTruthOptions& t = job->truth;
@@ -55,4 +67,4 @@ Action addTruthCommand(CLI::App& app) {
   };
 }
 
-} // namespace solidtex::cli
+}  // namespace solidtex::cli

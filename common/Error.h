@@ -11,4 +11,4 @@ public:
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -28,6 +28,8 @@ std::uint64_t deriveSeed(std::uint64_t seed, std::uint64_t stream, std::uint64_t
 inline double uniform01(Rng& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 
 /// Uniform integer in [0, n), n > 0, identical across standard libraries.
-inline std::uint64_t uniformIndex(Rng& rng, std::uint64_t n) { return std::uint64_t(uniform01(rng) * double(n)); }
+inline std::uint64_t uniformIndex(Rng& rng, std::uint64_t n) {
+  return std::uint64_t(uniform01(rng) * double(n));
+}
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -58,4 +58,4 @@ inline double wasserstein1(std::vector<double> a, std::vector<double> b) {
   return distance;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

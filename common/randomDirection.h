@@ -16,4 +16,4 @@ inline Eigen::Vector3d randomDirection(Rng& rng) {
   }
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -19,4 +19,4 @@ inline float linearToSrgb(float c) {
   return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

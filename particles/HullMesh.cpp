@@ -27,4 +27,4 @@ Eigen::Vector3d HullMesh::boxMax() const {
   return hi;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -15,4 +15,4 @@ struct HullMesh {
   Eigen::Vector3d boxMax() const;
 };
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include <opencv2/imgproc.hpp>
 #include <tbb/parallel_for.h>
+#include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
 #include "particles/rotation.h"
@@ -32,9 +32,11 @@ void checkOptions(const ParticleOptions& options) {
   checkRange("views", options.views, 1, 16);
   checkRange("shapes", options.shapes, 1, 100000);
   checkRange("contourVertices", options.contourVertices, 3, 10000);
-  checkRange("smoothing resolution", options.smoothing.resolution, 8, 64);  // its padded grid grows as its cube
+  checkRange("smoothing resolution", options.smoothing.resolution, 8,
+             64);  // its padded grid grows as its cube
   if (!(options.smoothing.radius >= 0 && options.smoothing.radius <= 0.5))
-    throw InputError("particle smoothing must be in [0, 0.5], got " + std::to_string(options.smoothing.radius));
+    throw InputError("particle smoothing must be in [0, 0.5], got " +
+                     std::to_string(options.smoothing.radius));
 }
 
 // Particles whose contours carve the hulls; those cut by the photo's border only when there is no other.
@@ -48,7 +50,8 @@ std::vector<int> contourSources(const ExemplarStats& stats) {
     all.push_back(i);
     if (!p.border) inner.push_back(i);
   }
-  if (all.empty()) throw InputError("no particle contour of the photo encloses an area: cannot build particle shapes");
+  if (all.empty())
+    throw InputError("no particle contour of the photo encloses an area: cannot build particle shapes");
   return inner.empty() ? all : inner;
 }
 
@@ -65,8 +68,8 @@ std::optional<HullMesh> tryHull(const ExemplarStats& stats, const std::vector<in
   return hull;
 }
 
-HullMesh buildHull(const ExemplarStats& stats, const std::vector<int>& sources, const ParticleOptions& options,
-                   int index) {
+HullMesh buildHull(const ExemplarStats& stats, const std::vector<int>& sources,
+                   const ParticleOptions& options, int index) {
   Rng rng(deriveSeed(options.seed, std::uint64_t(index)));
   for (int attempt = 0; attempt < kAttemptsPerHull; ++attempt)
     if (std::optional<HullMesh> hull = tryHull(stats, sources, options, rng)) return std::move(*hull);
@@ -127,7 +130,8 @@ int drawDepth(const std::vector<SizePair>& pairs, int width, int height, Rng& rn
 // A non-border particle (any particle when all touch the border) whose box is nearest to
 // (width, height) in |dw| + |dh|, which is 0 for the photo's own pairs; random among equals.
 int drawSource(const std::vector<Particle2D>& particles, int width, int height, Rng& rng) {
-  const bool anyInner = std::any_of(particles.begin(), particles.end(), [](const Particle2D& p) { return !p.border; });
+  const bool anyInner =
+      std::any_of(particles.begin(), particles.end(), [](const Particle2D& p) { return !p.border; });
   int best = INT_MAX;
   std::vector<int> ties;
   for (int i = 0; i < int(particles.size()); ++i) {
@@ -143,7 +147,7 @@ int drawSource(const std::vector<Particle2D>& particles, int width, int height, 
   return ties.empty() ? -1 : ties[uniformIndex(rng, ties.size())];
 }
 
-} // namespace
+}  // namespace
 
 ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options)
     : stats_(stats), options_(options) {
@@ -161,13 +165,15 @@ ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptio
                                  std::vector<HullMesh> sharpHulls)
     : stats_(stats), options_(options), sharpHulls_(std::move(sharpHulls)), hulls_(sharpHulls_.size()) {
   checkOptions(options);
-  tbb::parallel_for(std::size_t(0), hulls_.size(), [&](std::size_t i) { hulls_[i] = smoothHull(sharpHulls_[i], options.smoothing); });
+  tbb::parallel_for(std::size_t(0), hulls_.size(),
+                    [&](std::size_t i) { hulls_[i] = smoothHull(sharpHulls_[i], options.smoothing); });
 }
 
 ParticleFactory ParticleFactory::withSmoothing(const HullSmoothing& smoothing, int maxHulls) const {
   ParticleOptions options = options_;
   options.smoothing = smoothing;
-  const std::size_t count = maxHulls > 0 ? std::min(sharpHulls_.size(), std::size_t(maxHulls)) : sharpHulls_.size();
+  const std::size_t count =
+      maxHulls > 0 ? std::min(sharpHulls_.size(), std::size_t(maxHulls)) : sharpHulls_.size();
   options.shapes = int(count);
   return ParticleFactory(stats_, options, {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
 }
@@ -182,4 +188,4 @@ VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) con
   return voxelize(hull, randomRotation(rng), width, height, depth);
 }
 
-} // namespace solidtex
+}  // namespace solidtex

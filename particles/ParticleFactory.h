@@ -12,17 +12,17 @@
 namespace solidtex {
 
 struct ParticleOptions {
-  int views = 3;              ///< contours per visual hull (paper: 3 to 5)
-  int shapes = 64;            ///< distinct hulls built up front and reused with fresh sizes and rotations
-  int contourVertices = 48;   ///< contours are simplified to about this many vertices before the CGAL work
-  HullSmoothing smoothing;    ///< rounds the edges where the views' prisms meet
+  int views = 3;             ///< contours per visual hull (paper: 3 to 5)
+  int shapes = 64;           ///< distinct hulls built up front and reused with fresh sizes and rotations
+  int contourVertices = 48;  ///< contours are simplified to about this many vertices before the CGAL work
+  HullSmoothing smoothing;   ///< rounds the edges where the views' prisms meet
   std::uint64_t seed = 1;
 };
 
 /// A 3D box size picked the paper's hierarchical way (3.5), in photo pixels.
 struct ParticleSize {
   int width = 0, height = 0, depth = 0;
-  int source = -1;            ///< index into ExemplarStats::particles whose colour and residual it takes (3.6)
+  int source = -1;  ///< index into ExemplarStats::particles whose colour and residual it takes (3.6)
 };
 
 /// Makes 3D particles from the photo's contours: visual hulls (3.4), sizes (3.5).
@@ -55,7 +55,8 @@ public:
   const ParticleOptions& options() const { return options_; }
 
 private:
-  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options, std::vector<HullMesh> sharpHulls);
+  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
+                  std::vector<HullMesh> sharpHulls);
 
   const ExemplarStats& stats_;
   ParticleOptions options_;
@@ -63,4 +64,4 @@ private:
   std::vector<HullMesh> hulls_;       ///< sharpHulls_ smoothed as the options say
 };
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -9,7 +9,9 @@ std::size_t VoxelShape::voxelCount() const {
 }
 
 std::vector<Voxel> VoxelShape::boundary() const {
-  const auto in = [&](int i, int j, int k) { return dims.contains(i, j, k) && inside[dims.index(i, j, k)] != 0; };
+  const auto in = [&](int i, int j, int k) {
+    return dims.contains(i, j, k) && inside[dims.index(i, j, k)] != 0;
+  };
   std::vector<Voxel> out;
   for (int k = 0; k < dims.z; ++k)
     for (int j = 0; j < dims.y; ++j)
@@ -20,4 +22,4 @@ std::vector<Voxel> VoxelShape::boundary() const {
   return out;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -16,4 +16,4 @@ struct VoxelShape {
   std::vector<Voxel> boundary() const;
 };
 
-} // namespace solidtex
+}  // namespace solidtex

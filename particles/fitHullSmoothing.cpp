@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <opencv2/imgproc.hpp>
 #include <tbb/parallel_for.h>
+#include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
 #include "common/distributionDistance.h"
@@ -14,8 +14,8 @@
 namespace solidtex {
 namespace {
 
-constexpr double kMinShapeArea = 20;   // samples: smaller sections are too coarse to have a shape
-constexpr int kHullsTried = 16;        // of the pool, smoothed per candidate
+constexpr double kMinShapeArea = 20;  // samples: smaller sections are too coarse to have a shape
+constexpr int kHullsTried = 16;       // of the pool, smoothed per candidate
 constexpr int kShapesPerCandidate = 64;
 constexpr int kPlanesPerShape = 8;
 constexpr std::uint64_t kFitStream = 0x736d6f6f;  // "smoo"
@@ -52,7 +52,9 @@ std::vector<cv::Point> layerPixels(const VoxelShape& shape, int axis, int layer)
 ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
                            double sizeFactor, Rng& rng) {
   const std::vector<std::size_t> sources = statisticalParticles(stats.particles);
-  const auto scaled = [&](int pixels) { return std::max(1, int(std::lround(pixels * voxelsPerPixel * sizeFactor))); };
+  const auto scaled = [&](int pixels) {
+    return std::max(1, int(std::lround(pixels * voxelsPerPixel * sizeFactor)));
+  };
   ShapeColumns out;
   for (int s = 0; s < kShapesPerCandidate && !sources.empty(); ++s) {
     const cv::Rect& box = stats.particles[sources[uniformIndex(rng, sources.size())]].box;
@@ -61,14 +63,15 @@ ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& fa
     const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
     for (int p = 0; p < kPlanesPerShape; ++p) {
       const int axis = int(uniformIndex(rng, 3));
-      const std::vector<cv::Point> pixels = layerPixels(shape, axis, int(uniformIndex(rng, std::uint64_t(extent[axis]))));
+      const std::vector<cv::Point> pixels =
+          layerPixels(shape, axis, int(uniformIndex(rng, std::uint64_t(extent[axis]))));
       if (double(pixels.size()) >= kMinShapeArea) out.add(measureRegion(pixels));
     }
   }
   return out;
 }
 
-} // namespace
+}  // namespace
 
 std::optional<double> parseSmoothing(const std::string& text) {
   if (text == "auto") return std::nullopt;
@@ -86,8 +89,8 @@ std::optional<double> parseSmoothing(const std::string& text) {
 
 std::vector<double> smoothingCandidates() { return {0, 0.04, 0.08, 0.12, 0.16, 0.2}; }
 
-SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                              double sizeFactor, std::uint64_t seed) {
+SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory& factory,
+                              double voxelsPerPixel, double sizeFactor, std::uint64_t seed) {
   const ShapeColumns photo = photoShapes(stats, voxelsPerPixel);
   const std::vector<double> radii = smoothingCandidates();
   std::vector<SmoothingFit> fits(radii.size());
@@ -97,11 +100,12 @@ SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory&
     const ParticleFactory candidate = factory.withSmoothing(smoothing, kHullsTried);
     Rng rng(deriveSeed(seed, kFitStream));  // the same particles and planes for every candidate
     const ShapeColumns sections = sectionShapes(stats, candidate, voxelsPerPixel, sizeFactor, rng);
-    fits[c] = {radii[c], ksStatistic(photo.solidity, sections.solidity), ksStatistic(photo.roundness, sections.roundness)};
+    fits[c] = {radii[c], ksStatistic(photo.solidity, sections.solidity),
+               ksStatistic(photo.roundness, sections.roundness)};
   });
   return *std::min_element(fits.begin(), fits.end(), [](const SmoothingFit& a, const SmoothingFit& b) {
     return a.solidityKs + a.roundnessKs < b.solidityKs + b.roundnessKs;
   });
 }
 
-} // namespace solidtex
+}  // namespace solidtex

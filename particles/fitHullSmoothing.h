@@ -27,10 +27,10 @@ std::vector<double> smoothingCandidates();
 /// least 20 samples) to the photo's statistical particles, both at `voxelsPerPixel`, the resolution
 /// the solid can show. Gravel keeps its edges; pebbles, beans and coins come out round.
 /// Deterministic for the seed.
-SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                              double sizeFactor, std::uint64_t seed);
+SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory& factory,
+                              double voxelsPerPixel, double sizeFactor, std::uint64_t seed);
 
 /// "auto" (none: fit it) or a radius in [0, 0.5]; throws InputError otherwise.
 std::optional<double> parseSmoothing(const std::string& text);
 
-} // namespace solidtex
+}  // namespace solidtex

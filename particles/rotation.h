@@ -17,4 +17,4 @@ inline Eigen::Matrix3d randomRotation(Rng& rng) {
   return q.toRotationMatrix();
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -32,7 +32,8 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
-Eigen::Vector2d closestOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+Eigen::Vector2d closestOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                                 const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double length2 = ab.squaredNorm();
   return length2 > 0 ? Eigen::Vector2d(a + std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) * ab) : a;
@@ -52,8 +53,9 @@ Meeting nearestMeeting(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const
   const double ca = cross(c, d, a), cb = cross(c, d, b);
   if (ca * cb < 0 && cross(a, b, c) * cross(a, b, d) < 0) return {a + ca / (ca - cb) * (b - a), 0};
   Meeting best{a, std::numeric_limits<double>::infinity()};
-  for (const auto& [p, q] : {std::pair{a, closestOnSegment(a, c, d)}, std::pair{b, closestOnSegment(b, c, d)},
-                             std::pair{c, closestOnSegment(c, a, b)}, std::pair{d, closestOnSegment(d, a, b)}})
+  for (const auto& [p, q] :
+       {std::pair{a, closestOnSegment(a, c, d)}, std::pair{b, closestOnSegment(b, c, d)},
+        std::pair{c, closestOnSegment(c, a, b)}, std::pair{d, closestOnSegment(d, a, b)}})
     if ((p - q).norm() < best.distance) best = {(p + q) / 2, (p - q).norm()};
   return best;
 }
@@ -99,7 +101,8 @@ Polygon cutAtPinch(const Polygon& poly, const Pinch& pinch) {
   outer.push_back(pinch.point);
   outer.insert(outer.end(), poly.begin() + std::ptrdiff_t(pinch.j + 1), poly.end());
   Polygon inner{pinch.point};
-  inner.insert(inner.end(), poly.begin() + std::ptrdiff_t(pinch.i + 1), poly.begin() + std::ptrdiff_t(pinch.j + 1));
+  inner.insert(inner.end(), poly.begin() + std::ptrdiff_t(pinch.i + 1),
+               poly.begin() + std::ptrdiff_t(pinch.j + 1));
   return std::abs(signedArea(outer)) >= std::abs(signedArea(inner)) ? outer : inner;
 }
 
@@ -123,7 +126,7 @@ std::vector<cv::Point> simplifyContour(const std::vector<cv::Point>& contour, in
   return best;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<Eigen::Vector2d> makeSimplePolygon(std::vector<Eigen::Vector2d> polygon) {
   std::erase_if(polygon, [](const Eigen::Vector2d& p) { return !p.allFinite(); });
@@ -150,4 +153,4 @@ std::vector<Eigen::Vector2d> normalizeContour(const std::vector<cv::Point>& cont
   return makeSimplePolygon(std::move(polygon));
 }
 
-} // namespace solidtex
+}  // namespace solidtex

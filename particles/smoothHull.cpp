@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <opencv2/imgproc.hpp>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 #include <openvdb/tools/VolumeToMesh.h>
+#include <opencv2/imgproc.hpp>
 
 #include "particles/voxelizeHull.h"
 
@@ -16,11 +16,12 @@ namespace {
 // The hull voxelized with `resolution` voxels across its largest side and `pad` empty voxels around:
 // 1 inside, 0 outside, as z-slices of a (z, y * x) matrix. `origin` and `step` take voxel indices back
 // to the hull's coordinates.
-cv::Mat insideOf(const HullMesh& hull, int resolution, int pad, Eigen::Vector3i& sides, Eigen::Vector3d& origin,
-                 Eigen::Vector3d& step) {
+cv::Mat insideOf(const HullMesh& hull, int resolution, int pad, Eigen::Vector3i& sides,
+                 Eigen::Vector3d& origin, Eigen::Vector3d& step) {
   const Eigen::Vector3d lo = hull.boxMin(), extent = hull.boxMax() - lo;
   Eigen::Vector3i inner;
-  for (int a = 0; a < 3; ++a) inner[a] = std::max(2, int(std::lround(resolution * extent[a] / extent.maxCoeff())));
+  for (int a = 0; a < 3; ++a)
+    inner[a] = std::max(2, int(std::lround(resolution * extent[a] / extent.maxCoeff())));
   const VoxelShape shape = voxelize(hull, Eigen::Matrix3d::Identity(), inner.x(), inner.y(), inner.z());
   step = extent.cwiseQuotient(inner.cast<double>());
   origin = lo + 0.5 * step - double(pad) * step;  // index (0,0,0): the centre of the padded corner voxel
@@ -44,7 +45,7 @@ void gaussianBlur3d(cv::Mat& volume, const Eigen::Vector3i& sides, double sigma)
   cv::GaussianBlur(volume, volume, cv::Size(1, 2 * reach + 1), 0, sigma, cv::BORDER_CONSTANT);
 }
 
-} // namespace
+}  // namespace
 
 HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing) {
   const int resolution = std::max(8, smoothing.resolution);
@@ -59,7 +60,8 @@ HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing) {
   gaussianBlur3d(volume, sides, sigma);
 
   openvdb::initialize();
-  const openvdb::CoordBBox box(openvdb::Coord(0), openvdb::Coord(sides.x() - 1, sides.y() - 1, sides.z() - 1));
+  const openvdb::CoordBBox box(openvdb::Coord(0),
+                               openvdb::Coord(sides.x() - 1, sides.y() - 1, sides.z() - 1));
   const openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(box, volume.ptr<float>());
   auto grid = openvdb::FloatGrid::create(0.0f);
   openvdb::tools::copyFromDense(dense, *grid, 0.0f);
@@ -82,4 +84,4 @@ HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing) {
   return out.triangles.empty() ? hull : out;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -8,8 +8,9 @@ namespace solidtex {
 
 /// How far a hull is rounded.
 struct HullSmoothing {
-  double radius = 0.12;  ///< Gaussian sigma as a share of the hull's largest side; 0: none (the paper's sharp hulls)
-  int resolution = 40;   ///< voxels across the hull's largest side while it is filtered
+  double radius =
+      0.12;  ///< Gaussian sigma as a share of the hull's largest side; 0: none (the paper's sharp hulls)
+  int resolution = 40;  ///< voxels across the hull's largest side while it is filtered
 };
 
 /// The hull voxelized, its inside indicator Gaussian-filtered (OpenCV, separable in 3D) and meshed
@@ -18,4 +19,4 @@ struct HullSmoothing {
 /// the hull itself when sigma (radius x resolution) is under half a voxel.
 HullMesh smoothHull(const HullMesh& hull, const HullSmoothing& smoothing);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -24,7 +24,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 constexpr double kHalfLength = 1.0;
 
 void checkRotation(const Eigen::Matrix3d& r) {
-  if (!r.allFinite() || (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-6 || r.determinant() < 0)
+  if (!r.allFinite() || (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-6 ||
+      r.determinant() < 0)
     throw std::invalid_argument("visualHull: a view's rotation is not a proper rotation matrix");
 }
 
@@ -56,7 +57,8 @@ ExactMesh prism(const Silhouette& view) {
   if (poly.empty()) return mesh;
   std::vector<ExactMesh::Vertex_index> bottom, top;
   for (const Eigen::Vector2d& q : poly) {
-    bottom.push_back(mesh.add_vertex(exactPoint(view.rotation * Eigen::Vector3d(q.x(), q.y(), -kHalfLength))));
+    bottom.push_back(
+        mesh.add_vertex(exactPoint(view.rotation * Eigen::Vector3d(q.x(), q.y(), -kHalfLength))));
     top.push_back(mesh.add_vertex(exactPoint(view.rotation * Eigen::Vector3d(q.x(), q.y(), kHalfLength))));
   }
   mesh.add_face(std::vector(bottom.rbegin(), bottom.rend()));
@@ -81,9 +83,8 @@ Eigen::Vector3d rounded(const EK::Point_3& p) {
 // starting at its smallest vertex, triangles sorted. Same hull, same bits, at any thread count.
 HullMesh toHullMesh(const ExactMesh& mesh) {
   std::vector<ExactMesh::Vertex_index> order(mesh.vertices().begin(), mesh.vertices().end());
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) {
-    return CGAL::compare_xyz(mesh.point(a), mesh.point(b)) == CGAL::SMALLER;
-  });
+  std::sort(order.begin(), order.end(),
+            [&](auto a, auto b) { return CGAL::compare_xyz(mesh.point(a), mesh.point(b)) == CGAL::SMALLER; });
   std::vector<int> rank(mesh.num_vertices(), -1);  // by index, removed vertices included
   HullMesh out;
   for (const auto v : order) {
@@ -93,7 +94,8 @@ HullMesh toHullMesh(const ExactMesh& mesh) {
   for (const auto f : mesh.faces()) {
     std::array<int, 3> tri{};
     int corner = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) tri[std::size_t(corner++)] = rank[v.idx()];
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      tri[std::size_t(corner++)] = rank[v.idx()];
     std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
     out.triangles.push_back(tri);
   }
@@ -101,7 +103,7 @@ HullMesh toHullMesh(const ExactMesh& mesh) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 HullMesh visualHull(const std::vector<Silhouette>& views) {
   for (const Silhouette& view : views) checkRotation(view.rotation);
@@ -115,4 +117,4 @@ HullMesh visualHull(const std::vector<Silhouette>& views) {
   return toHullMesh(hull);
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -16,7 +16,8 @@ namespace solidtex {
 /// silhouette carves the prism { p : (R^T p).xy inside polygon }. `rotation` must be a proper
 /// rotation (orthonormal, determinant +1).
 struct Silhouette {
-  std::vector<Eigen::Vector2d> polygon;   ///< in [-0.5,0.5]^2, any orientation; made simple by makeSimplePolygon
+  std::vector<Eigen::Vector2d>
+      polygon;  ///< in [-0.5,0.5]^2, any orientation; made simple by makeSimplePolygon
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
 };
 
@@ -40,4 +41,4 @@ std::vector<Eigen::Vector2d> makeSimplePolygon(std::vector<Eigen::Vector2d> poly
 /// Throws std::invalid_argument when a rotation is not a proper rotation.
 HullMesh visualHull(const std::vector<Silhouette>& views);
 
-} // namespace solidtex
+}  // namespace solidtex

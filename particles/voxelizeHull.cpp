@@ -36,7 +36,8 @@ void checkSides(int w, int h, int d) {
 }
 
 // Turned, then scaled per axis so that the hull's box is exactly [0,w] x [0,h] x [0,d] (voxel units).
-std::vector<Eigen::Vector3d> placeInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation, const Dims& dims) {
+std::vector<Eigen::Vector3d> placeInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation,
+                                        const Dims& dims) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(hull.vertices.size());
   for (const Eigen::Vector3d& v : hull.vertices) points.push_back(rotation * v);
@@ -89,9 +90,11 @@ void addCrossings(const GridPoint& a, const GridPoint& b, const GridPoint& c, co
     const std::int64_t pz = k * std::int64_t(kGrid) + kHalf;
     for (int j = j0; j <= j1; ++j) {
       const std::int64_t py = j * std::int64_t(kGrid) + kHalf;
-      if (side(a, b, py, pz) != orientation || side(b, c, py, pz) != orientation || side(c, a, py, pz) != orientation)
+      if (side(a, b, py, pz) != orientation || side(b, c, py, pz) != orientation ||
+          side(c, a, py, pz) != orientation)
         continue;
-      const double x = double(a.x) - (normalY * double(py - a.y) + normalZ * double(pz - a.z)) / double(normalX);
+      const double x =
+          double(a.x) - (normalY * double(py - a.y) + normalZ * double(pz - a.z)) / double(normalX);
       out.push_back({x / kGrid, std::uint32_t(k * dims.y + j), -orientation});
     }
   }
@@ -106,8 +109,9 @@ std::vector<Crossing> byRow(const std::vector<Crossing>& crossings, std::vector<
   std::vector<std::size_t> next(rowStart.begin(), rowStart.end() - 1);
   for (const Crossing& c : crossings) sorted[next[c.row]++] = c;
   for (std::size_t row = 0; row + 1 < rowStart.size(); ++row)
-    std::sort(sorted.begin() + std::ptrdiff_t(rowStart[row]), sorted.begin() + std::ptrdiff_t(rowStart[row + 1]),
-              [](const Crossing& a, const Crossing& b) { return a.x != b.x ? a.x < b.x : a.enter < b.enter; });
+    std::sort(
+        sorted.begin() + std::ptrdiff_t(rowStart[row]), sorted.begin() + std::ptrdiff_t(rowStart[row + 1]),
+        [](const Crossing& a, const Crossing& b) { return a.x != b.x ? a.x < b.x : a.enter < b.enter; });
   return sorted;
 }
 
@@ -151,15 +155,18 @@ std::vector<Run> runsOf(const VoxelShape& shape) {
 }
 
 int findRoot(std::vector<int>& parent, int r) {
-  while (parent[std::size_t(r)] != r) r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
+  while (parent[std::size_t(r)] != r)
+    r = parent[std::size_t(r)] = parent[std::size_t(parent[std::size_t(r)])];
   return r;
 }
 
 // Joins each run with the overlapping runs of the rows below it in y and in z (6-connectivity).
 std::vector<int> joinRuns(const std::vector<Run>& runs, const Dims& dims) {
   std::vector<std::size_t> rowStart(std::size_t(dims.y) * std::size_t(dims.z) + 1, runs.size());
-  for (std::size_t r = runs.size(); r-- > 0;) rowStart[std::size_t(runs[r].k) * std::size_t(dims.y) + std::size_t(runs[r].j)] = r;
-  for (std::size_t row = rowStart.size() - 1; row-- > 0;) rowStart[row] = std::min(rowStart[row], rowStart[row + 1]);
+  for (std::size_t r = runs.size(); r-- > 0;)
+    rowStart[std::size_t(runs[r].k) * std::size_t(dims.y) + std::size_t(runs[r].j)] = r;
+  for (std::size_t row = rowStart.size() - 1; row-- > 0;)
+    rowStart[row] = std::min(rowStart[row], rowStart[row + 1]);
   std::vector<int> parent(runs.size());
   std::iota(parent.begin(), parent.end(), 0);
   for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -180,18 +187,22 @@ void keepLargestPiece(VoxelShape& shape) {
   const std::vector<Run> runs = runsOf(shape);
   std::vector<int> parent = joinRuns(runs, shape.dims);
   std::vector<long> size(runs.size(), 0);
-  for (std::size_t r = 0; r < runs.size(); ++r) size[std::size_t(findRoot(parent, int(r)))] += runs[r].end - runs[r].begin;
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    size[std::size_t(findRoot(parent, int(r)))] += runs[r].end - runs[r].begin;
   const auto best = int(std::max_element(size.begin(), size.end()) - size.begin());
   for (std::size_t r = 0; r < runs.size(); ++r)
     if (findRoot(parent, int(r)) != best)
-      std::fill_n(&shape.inside[shape.dims.index(runs[r].begin, runs[r].j, runs[r].k)], runs[r].end - runs[r].begin, 0);
+      std::fill_n(&shape.inside[shape.dims.index(runs[r].begin, runs[r].j, runs[r].k)],
+                  runs[r].end - runs[r].begin, 0);
 }
 
 using Coord = std::array<int, 3>;
 
 Coord sizeOf(const Dims& dims) { return {dims.x, dims.y, dims.z}; }
 
-bool isInside(const VoxelShape& shape, const Coord& c) { return shape.inside[shape.dims.index(c[0], c[1], c[2])] != 0; }
+bool isInside(const VoxelShape& shape, const Coord& c) {
+  return shape.inside[shape.dims.index(c[0], c[1], c[2])] != 0;
+}
 
 // Occupied extent per axis: lo[axis], hi[axis].
 std::array<Coord, 2> occupiedBox(const VoxelShape& shape) {
@@ -219,11 +230,12 @@ void cropToOccupiedBox(VoxelShape& shape) {
   std::vector<std::uint8_t> inside(cropped.count());
   for (int k = 0; k < cropped.z; ++k)
     for (int j = 0; j < cropped.y; ++j)
-      std::copy_n(&shape.inside[shape.dims.index(lo[0], j + lo[1], k + lo[2])], cropped.x, &inside[cropped.index(0, j, k)]);
+      std::copy_n(&shape.inside[shape.dims.index(lo[0], j + lo[1], k + lo[2])], cropped.x,
+                  &inside[cropped.index(0, j, k)]);
   shape = {cropped, std::move(inside)};
 }
 
-} // namespace
+}  // namespace
 
 VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d) {
   checkSides(w, h, d);
@@ -242,4 +254,4 @@ VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w
   return shape;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -18,4 +18,4 @@ inline constexpr int kMaxParticleSide = 8192;
 /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide] or a flat or empty hull.
 VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d);
 
-} // namespace solidtex
+}  // namespace solidtex

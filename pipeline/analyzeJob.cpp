@@ -16,4 +16,4 @@ nlohmann::json runAnalyze(const AnalyzeJob& job) {
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -19,4 +19,4 @@ struct AnalyzeJob {
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runAnalyze(const AnalyzeJob& job);
 
-} // namespace solidtex
+}  // namespace solidtex

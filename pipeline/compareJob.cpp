@@ -32,8 +32,12 @@ std::vector<double> particleVolumesOf(const SolidVolume& volume) {
 }
 
 nlohmann::json summaryJson(const SectionSummary& s) {
-  return {{"shapes", s.shapes},          {"solidity_mean", s.solidity},       {"roundness_mean", s.roundness},
-          {"windows", s.windows},        {"window_spread", s.windowSpread},   {"neighbours", s.neighbours},
+  return {{"shapes", s.shapes},
+          {"solidity_mean", s.solidity},
+          {"roundness_mean", s.roundness},
+          {"windows", s.windows},
+          {"window_spread", s.windowSpread},
+          {"neighbours", s.neighbours},
           {"neighbour_distance_mean", s.neighbourDistance}};
 }
 
@@ -59,9 +63,11 @@ double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
 // Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
 // the truth's sections are cut at the solid's resolution so that their shapes compare too.
 nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale,
-                                const SectionStatistics& solidSections, SectionOptions sectionOptions, double diameter) {
+                                const SectionStatistics& solidSections, SectionOptions sectionOptions,
+                                double diameter) {
   const SolidVolume truth = readVdb(truthPath);
-  if (truth.particleId.empty()) throw InputError(truthPath + " has no particle_id grid: not a particle solid");
+  if (truth.particleId.empty())
+    throw InputError(truthPath + " has no particle_id grid: not a particle solid");
   const double truthScale = truthScaleOf(truthPath, truth);
   std::vector<double> truthVolumes = particleVolumesOf(truth);
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
@@ -69,14 +75,16 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   const double truthMean = mean(truthVolumes);
   sectionOptions.step = truthScale / scale;
   const SectionStatistics truthSections = sampleSections(truth.dims, truth.particleId, sectionOptions);
-  nlohmann::json report = comparisonJson(compareSections(truthSections, solidSections, diameter), "truth_sections");
+  nlohmann::json report =
+      comparisonJson(compareSections(truthSections, solidSections, diameter), "truth_sections");
   report.update({{"truth", truthPath},
                  {"particles", truthVolumes.size()},
                  {"mean_volume", truthMean},
                  {"solid_mean_volume", mean(volumes)},
                  {"section_ks", ksStatistic(truthSections.areas, solidSections.areas)},
                  {"volume_ks", ksStatistic(truthVolumes, volumes)},
-                 {"volume_wasserstein1_over_mean", truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
+                 {"volume_wasserstein1_over_mean",
+                  truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
   return report;
 }
 
@@ -87,19 +95,23 @@ int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
   return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
-} // namespace
+}  // namespace
 
 nlohmann::json runCompare(const CompareJob& job) {
-  if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096) throw InputError("--axis-planes must be in [1, 4096]");
-  if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000) throw InputError("--oblique-planes must be in [0, 100000]");
+  if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096)
+    throw InputError("--axis-planes must be in [1, 4096]");
+  if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000)
+    throw InputError("--oblique-planes must be in [0, 100000]");
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const SolidVolume volume = readVdb(job.volume);
-  if (volume.particleId.empty()) throw InputError(job.volume + " has no particle_id grid: not a particle solid");
+  if (volume.particleId.empty())
+    throw InputError(job.volume + " has no particle_id grid: not a particle solid");
   const double scale = scaleOf(job, volume);
 
   std::vector<double> photoAreas;
-  for (std::size_t i : statisticalParticles(stats.particles)) photoAreas.push_back(stats.particles[i].area * scale * scale);
+  for (std::size_t i : statisticalParticles(stats.particles))
+    photoAreas.push_back(stats.particles[i].area * scale * scale);
   const double diameter = meanParticleDiameter(stats) * scale;
   SectionOptions sectionOptions = job.sections;
   sectionOptions.minArea = stats.minArea * scale * scale;
@@ -112,8 +124,12 @@ nlohmann::json runCompare(const CompareJob& job) {
   std::size_t occupied = 0;
   for (std::int32_t id : volume.particleId) occupied += id > 0;
 
-  ComparisonData data{photoAreas, sections.areas, stats.histogram.ratios, tenBinRatios(volumes),
-                      shapes.referenceSolidity, shapes.solidSolidity};
+  ComparisonData data{photoAreas,
+                      sections.areas,
+                      stats.histogram.ratios,
+                      tenBinRatios(volumes),
+                      shapes.referenceSolidity,
+                      shapes.solidSolidity};
   const double photoMean = mean(photoAreas);
   nlohmann::json report = {
       {"photo", job.photo},
@@ -126,7 +142,8 @@ nlohmann::json runCompare(const CompareJob& job) {
       {"volume_histogram", data.volumeHistogram},
       {"particles", volumes.size()},
       {"photo_particles", photoAreas.size()},
-      {"sections", {{"planes", sections.planes}, {"count", sections.areas.size()}, {"mean_area", mean(sections.areas)}}},
+      {"sections",
+       {{"planes", sections.planes}, {"count", sections.areas.size()}, {"mean_area", mean(sections.areas)}}},
       {"photo_mean_area", photoMean},
       {"ks", ksStatistic(photoAreas, sections.areas)},
       {"ks_critical_95", ksCritical95(photoAreas.size(), sections.areas.size())},
@@ -134,10 +151,11 @@ nlohmann::json runCompare(const CompareJob& job) {
       {"shape_and_arrangement", comparisonJson(shapes, "photo")},
       {"window_side", sectionOptions.windowSide},
       {"particle_diameter", diameter}};
-  if (job.truth) report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
+  if (job.truth)
+    report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
   if (job.plot) writeImage(*job.plot, plotComparison(data, report));
   if (job.report) writeJsonFile(*job.report, report);
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -62,8 +62,8 @@ void drawCdf(cv::Mat& panel, std::vector<double> values, double minX, double max
 
 // The CDFs of one measure of the photo and of the sections, with lines of figures where the CDFs leave room.
 cv::Mat cdfPanel(const std::string& title, const std::string& xLabel, const std::vector<double>& photo,
-                 const std::vector<double>& sections, double minX, double maxX, const std::vector<std::string>& lines,
-                 int linesX) {
+                 const std::vector<double>& sections, double minX, double maxX,
+                 const std::vector<std::string>& lines, int linesX) {
   cv::Mat panel(kPanelHeight, kPanelWidth, CV_32FC3, cv::Scalar(1, 1, 1));
   axes(panel, title, xLabel);
   drawCdf(panel, photo, minX, maxX, kPhotoColor);
@@ -90,28 +90,31 @@ cv::Mat areaPanel(const ComparisonData& data, const nlohmann::json& report) {
   double maxX = 1;
   for (const auto* values : {&data.photoAreas, &data.sectionAreas})
     if (!values->empty()) maxX = std::max(maxX, *std::max_element(values->begin(), values->end()));
-  return cdfPanel("CDF of section areas vs photo particle areas", "area (voxels^2)", data.photoAreas,
-                  data.sectionAreas, 0, maxX,
-                  {format("KS %.3f   W1/mean %.3f", report.value("ks", 0.0), report.value("wasserstein1_over_mean", 0.0)),
-                   format("area fraction: photo %.3f", report.value("area_fraction", 0.0)),
-                   format("volume %.3f  sections %.3f", report.value("volume_fraction", 0.0),
-                          report.value("section_area_fraction", 0.0))},
-                  kMargin + 170);
+  return cdfPanel(
+      "CDF of section areas vs photo particle areas", "area (voxels^2)", data.photoAreas, data.sectionAreas,
+      0, maxX,
+      {format("KS %.3f   W1/mean %.3f", report.value("ks", 0.0), report.value("wasserstein1_over_mean", 0.0)),
+       format("area fraction: photo %.3f", report.value("area_fraction", 0.0)),
+       format("volume %.3f  sections %.3f", report.value("volume_fraction", 0.0),
+              report.value("section_area_fraction", 0.0))},
+      kMargin + 170);
 }
 
 cv::Mat shapePanel(const ComparisonData& data, const nlohmann::json& report) {
   const nlohmann::json& c = report.at("shape_and_arrangement");
-  return cdfPanel("CDF of solidity (area / convex hull area)", "solidity", data.photoSolidity, data.sectionSolidity,
-                  0.5, 1,
-                  {format("solidity KS %.3f  roundness KS %.3f", c.value("solidity_ks", 0.0), c.value("roundness_ks", 0.0)),
-                   format("window spread: photo %.3f  sections %.3f", c["photo"].value("window_spread", 0.0),
-                          c["sections"].value("window_spread", 0.0)),
-                   format("nearest neighbour / diameter: %.2f vs %.2f", c["photo"].value("neighbour_distance_mean", 0.0),
-                          c["sections"].value("neighbour_distance_mean", 0.0))},
-                  kMargin + 10);
+  return cdfPanel(
+      "CDF of solidity (area / convex hull area)", "solidity", data.photoSolidity, data.sectionSolidity, 0.5,
+      1,
+      {format("solidity KS %.3f  roundness KS %.3f", c.value("solidity_ks", 0.0),
+              c.value("roundness_ks", 0.0)),
+       format("window spread: photo %.3f  sections %.3f", c["photo"].value("window_spread", 0.0),
+              c["sections"].value("window_spread", 0.0)),
+       format("nearest neighbour / diameter: %.2f vs %.2f", c["photo"].value("neighbour_distance_mean", 0.0),
+              c["sections"].value("neighbour_distance_mean", 0.0))},
+      kMargin + 10);
 }
 
-} // namespace
+}  // namespace
 
 std::array<double, 10> tenBinRatios(const std::vector<double>& values) {
   std::array<double, 10> ratios{};
@@ -125,8 +128,9 @@ std::array<double, 10> tenBinRatios(const std::vector<double>& values) {
 
 cv::Mat plotComparison(const ComparisonData& data, const nlohmann::json& report) {
   cv::Mat canvas;
-  cv::hconcat(std::vector<cv::Mat>{histogramPanel(data), areaPanel(data, report), shapePanel(data, report)}, canvas);
+  cv::hconcat(std::vector<cv::Mat>{histogramPanel(data), areaPanel(data, report), shapePanel(data, report)},
+              canvas);
   return canvas;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

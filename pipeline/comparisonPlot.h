@@ -13,7 +13,7 @@ struct ComparisonData {
   std::vector<double> sectionAreas;      ///< voxel^2
   std::array<double, 10> areaHistogram;  ///< ratios
   std::array<double, 10> volumeHistogram;
-  std::vector<double> photoSolidity;     ///< of the photo's particles at the solid's resolution
+  std::vector<double> photoSolidity;  ///< of the photo's particles at the solid's resolution
   std::vector<double> sectionSolidity;
 };
 
@@ -24,4 +24,4 @@ std::array<double, 10> tenBinRatios(const std::vector<double>& values);
 /// histogram, the CDFs of section and photo areas and of their solidity, with the report's numbers.
 cv::Mat plotComparison(const ComparisonData& data, const nlohmann::json& report);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -9,8 +9,8 @@
 
 #include <tbb/info.h>
 
-#include "common/secondsSince.h"
 #include "common/Error.h"
+#include "common/secondsSince.h"
 
 namespace solidtex {
 
@@ -45,9 +45,10 @@ std::size_t checkedThreads(int threads) {
   return std::size_t(threads > 0 ? threads : tbb::info::default_concurrency());
 }
 
-} // namespace
+}  // namespace
 
-ThreadLimit::ThreadLimit(int threads) : control_(tbb::global_control::max_allowed_parallelism, checkedThreads(threads)) {}
+ThreadLimit::ThreadLimit(int threads)
+    : control_(tbb::global_control::max_allowed_parallelism, checkedThreads(threads)) {}
 
 void PhaseTimer::start(const std::string& name) {
   const auto now = Clock::now();
@@ -78,4 +79,4 @@ void ProgressLine::done() {
   dirty_ = false;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

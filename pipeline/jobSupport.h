@@ -2,8 +2,8 @@
 #include <chrono>
 #include <string>
 
-#include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
+#include <nlohmann/json.hpp>
 
 namespace solidtex {
 
@@ -50,4 +50,4 @@ private:
   std::chrono::steady_clock::time_point last_{};
 };
 
-} // namespace solidtex
+}  // namespace solidtex

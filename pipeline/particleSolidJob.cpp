@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "Version.h"
 #include "common/Error.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
@@ -16,7 +17,6 @@
 #include "voxel/paintParticleSolid.h"
 #include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
-#include "Version.h"
 
 namespace solidtex {
 namespace {
@@ -24,16 +24,19 @@ namespace {
 void checkJob(const ParticleSolidJob& job) {
   for (int edge : {job.dims.x, job.dims.y, job.dims.z})
     if (edge < 8 || edge > kMaxVolumeEdge)
-      throw InputError("volume size " + std::to_string(edge) + " is out of range [8, " + std::to_string(kMaxVolumeEdge) + "]");
+      throw InputError("volume size " + std::to_string(edge) + " is out of range [8, " +
+                       std::to_string(kMaxVolumeEdge) + "]");
   if (job.voxelsPerPixel < 0 || job.voxelsPerPixel > 64)
     throw InputError("--scale must be in (0, 64] voxels per pixel");
   if (job.particles.views < 3 || job.particles.views > 5) throw InputError("--views must be 3, 4 or 5");
-  if (job.particles.shapes < 1 || job.particles.shapes > 4096) throw InputError("--shapes must be in [1, 4096]");
+  if (job.particles.shapes < 1 || job.particles.shapes > 4096)
+    throw InputError("--shapes must be in [1, 4096]");
   namespace fs = std::filesystem;
   const fs::path out(job.output);
   if (out.extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");
   const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent)) throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  if (!fs::is_directory(parent))
+    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
 }
 
 double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
@@ -61,25 +64,26 @@ std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const
 }
 
 nlohmann::json placementJson(const PlacementResult& placement, const ExemplarStats& stats, double scale) {
-  return {{"dims", {placement.dims.x, placement.dims.y, placement.dims.z}},
-          {"voxels_per_pixel", scale},
-          {"particles", placement.particles.size()},
-          {"volume_fraction", placement.volumeFraction},
-          {"area_fraction", stats.areaFraction},
-          {"placed_per_bin", placement.placedPerBin},
-          {"rejected_per_bin", placement.rejectedPerBin},
-          {"area_histogram", stats.histogram.ratios},
-          {"volume_histogram", placement.volumeHistogram},
-          {"stop_reason", placement.stopReason},
-          {"shrinking",
-           {{"steps", placement.shrinkSteps},
-            {"smallest_scale", placement.smallestScale},
-            {"particles_shrunk", placement.particlesBeforeShrinking < 0
-                                     ? 0
-                                     : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
+  return {
+      {"dims", {placement.dims.x, placement.dims.y, placement.dims.z}},
+      {"voxels_per_pixel", scale},
+      {"particles", placement.particles.size()},
+      {"volume_fraction", placement.volumeFraction},
+      {"area_fraction", stats.areaFraction},
+      {"placed_per_bin", placement.placedPerBin},
+      {"rejected_per_bin", placement.rejectedPerBin},
+      {"area_histogram", stats.histogram.ratios},
+      {"volume_histogram", placement.volumeHistogram},
+      {"stop_reason", placement.stopReason},
+      {"shrinking",
+       {{"steps", placement.shrinkSteps},
+        {"smallest_scale", placement.smallestScale},
+        {"particles_shrunk", placement.particlesBeforeShrinking < 0
+                                 ? 0
+                                 : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
 }
 
-} // namespace
+}  // namespace
 
 Boundary parseBoundary(const std::string& name) {
   if (name == "open") return Boundary::Open;
@@ -147,7 +151,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
 
   timer.start("sizing");
   SectionSizing sizing{1, {}, stats.histogram.ratios, 0, {}};
-  if (job.sizing == Sizing::Sections) sizing = fitSectionSizing(stats, factory, scale, job.seed, kSizingBootstraps);
+  if (job.sizing == Sizing::Sections)
+    sizing = fitSectionSizing(stats, factory, scale, job.seed, kSizingBootstraps);
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = scale * sizing.sizeFactor;
 
@@ -167,8 +172,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   }
   placementOptions.progress = [&](double fraction, int count) {
     char line[128];
-    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count, fraction,
-                  stats.areaFraction);
+    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
+                  fraction, stats.areaFraction);
     progress.update(line);
   };
   PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
@@ -181,9 +186,11 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   paints.reserve(placement.particles.size());
   for (const PlacedParticle& placed : placement.particles)
     paints.push_back({placed.source,
-                      {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5, placed.origin.z + placed.box.z * 0.5},
+                      {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
+                       placed.origin.z + placed.box.z * 0.5},
                       placed.voxelsPerPixel});
-  SolidVolume volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed);
+  SolidVolume volume =
+      paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   timer.start("write");
@@ -222,4 +229,4 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

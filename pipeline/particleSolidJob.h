@@ -27,20 +27,21 @@ const char* boundaryName(Boundary boundary);
 /// `solidtex particles`: photo to particle solid (.vdb, report, previews).
 struct ParticleSolidJob {
   std::string photo;
-  std::string output;                   ///< .vdb path
+  std::string output;  ///< .vdb path
   SegmentationOptions segmentation;
   Dims dims{128, 128, 128};
-  double voxelsPerPixel = 0;            ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
+  double voxelsPerPixel =
+      0;  ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
   PlacerKind placer = PlacerKind::Edt;
   Sizing sizing = Sizing::Sections;
   Arrangement arrangement = Arrangement::Uniform;
   Boundary boundary = Boundary::Open;
-  ParticleOptions particles;            ///< its seed is replaced by `seed`, its smoothing by `smoothing`
-  std::optional<double> smoothing;      ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
+  ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
+  std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;
   std::optional<std::string> report;
-  std::optional<std::string> preview;   ///< folder for PNGs
-  std::string commandLine;              ///< stored in the .vdb's metadata
+  std::optional<std::string> preview;  ///< folder for PNGs
+  std::string commandLine;             ///< stored in the .vdb's metadata
   bool progress = true;
 };
 
@@ -64,4 +65,4 @@ int openBoundaryMargin(const ExemplarStats& stats, double particleScale);
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runParticleSolid(const ParticleSolidJob& job);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -14,22 +14,29 @@ namespace {
 
 nlohmann::json toJson(const ErrorSummary& s) {
   if (s.count == 0) return {{"count", 0}};
-  return {{"count", s.count},          {"mean_error", s.meanError},     {"max_error", s.maxError},
-          {"mean_abs_error", s.meanAbsError}, {"p95_abs_error", s.p95AbsError}, {"max_abs_error", s.maxAbsError}};
+  return {{"count", s.count},
+          {"mean_error", s.meanError},
+          {"max_error", s.maxError},
+          {"mean_abs_error", s.meanAbsError},
+          {"p95_abs_error", s.p95AbsError},
+          {"max_abs_error", s.maxAbsError}};
 }
 
 nlohmann::json toJson(const BestFitCheck& check) {
-  const auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+  const auto optional = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json();
+  };
   return {{"radius", check.radius},
           {"exact_best_fit", optional(check.exactBestFit)},
           {"exact_at_spot", optional(check.exactAtSpot)},
           {"agrees", check.agrees}};
 }
 
-} // namespace
+}  // namespace
 
 nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
-  if (job.size < 16 || job.size > 512) throw InputError("--size must be in [16, 512], got " + std::to_string(job.size));
+  if (job.size < 16 || job.size > 512)
+    throw InputError("--size must be in [16, 512], got " + std::to_string(job.size));
   if (job.particles < 0) throw InputError("--particles must not be negative");
   ProgressLine progress(job.progress);
   const cv::Mat photo = loadPhoto(job.photo);
@@ -62,7 +69,8 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
                                       {"all_voxels", toJson(field.freeVoxels)},
                                       {"circumcentres", toJson(field.circumcentres)},
                                       {"best_fit", bestFits}};
-    const std::string name = field.kind == PlacerKind::Delaunay ? "delaunay (circumcentres)" : placerName(field.kind);
+    const std::string name =
+        field.kind == PlacerKind::Delaunay ? "delaunay (circumcentres)" : placerName(field.kind);
     errors.push_back({name, std::move(field.errors), field.seconds});
   }
   nlohmann::json report = {{"photo", job.photo},
@@ -82,4 +90,4 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -15,15 +15,15 @@ namespace solidtex {
 struct SpaciousnessJob {
   std::string photo;
   SegmentationOptions segmentation;
-  int size = 128;                      ///< cubic volume edge, voxels
-  int particles = 0;                   ///< particles placed before the fields are compared; 0: up to the photo's fraction
+  int size = 128;     ///< cubic volume edge, voxels
+  int particles = 0;  ///< particles placed before the fields are compared; 0: up to the photo's fraction
   std::uint64_t seed = 1;
-  std::optional<std::string> report;   ///< JSON
-  std::optional<std::string> plot;     ///< PNG of the error histograms
+  std::optional<std::string> report;  ///< JSON
+  std::optional<std::string> plot;    ///< PNG of the error histograms
   bool progress = true;
 };
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSpaciousness(const SpaciousnessJob& job);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -50,7 +50,7 @@ cv::Mat panelFor(const FieldErrors& field, double range) {
   return panel;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat plotSpaciousnessErrors(const SpaciousnessErrors& fields) {
   double range = 0.5;
@@ -63,4 +63,4 @@ cv::Mat plotSpaciousnessErrors(const SpaciousnessErrors& fields) {
   return canvas;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -19,4 +19,4 @@ using SpaciousnessErrors = std::vector<FieldErrors>;
 /// and build time printed: an sRGB CV_32FC3 image for writeImage.
 cv::Mat plotSpaciousnessErrors(const SpaciousnessErrors& fields);
 
-} // namespace solidtex
+}  // namespace solidtex

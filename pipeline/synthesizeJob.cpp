@@ -4,28 +4,30 @@
 
 #include <filesystem>
 
+#include "Version.h"
 #include "common/Error.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
 #include "synthesis/synthesizeSolid.h"
 #include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
-#include "Version.h"
 
 namespace solidtex {
 
 nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats) {
   const LevelStatistics& finest = stats.levels.back();
-  nlohmann::json report = {{"method", methodName(o.method)},
-                           {"size", o.size},
-                           {"levels", o.levels},
-                           {"neighborhoods", stats.neighborhoods},
-                           {"k", o.k},
-                           {"iterations", o.iterations},
-                           {"pca_dims", o.pcaDims},
-                           {"seed", o.seed},
-                           {"control", bool(o.control)},
-                           {"exemplar", {{"name", o.exemplarName}, {"width", finest.exemplarWidth}, {"height", finest.exemplarHeight}}}};
+  nlohmann::json report = {
+      {"method", methodName(o.method)},
+      {"size", o.size},
+      {"levels", o.levels},
+      {"neighborhoods", stats.neighborhoods},
+      {"k", o.k},
+      {"iterations", o.iterations},
+      {"pca_dims", o.pcaDims},
+      {"seed", o.seed},
+      {"control", bool(o.control)},
+      {"exemplar",
+       {{"name", o.exemplarName}, {"width", finest.exemplarWidth}, {"height", finest.exemplarHeight}}}};
   if (o.method == Method::ChenWang) report["color_histogram_matching"] = o.colorHistogramMatching;
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < stats.levels.size(); ++l) {
@@ -33,7 +35,10 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
     nlohmann::json iterations = nlohmann::json::array();
     for (std::size_t i = 0; i < level.iterations.size(); ++i) {
       const IterationStatistics& step = level.iterations[i];
-      nlohmann::json entry = {{"iteration", i + 1}, {"energy", step.energy}, {"search_seconds", step.searchSeconds}, {"solve_seconds", step.solveSeconds}};
+      nlohmann::json entry = {{"iteration", i + 1},
+                              {"energy", step.energy},
+                              {"search_seconds", step.searchSeconds},
+                              {"solve_seconds", step.solveSeconds}};
       if (step.positionCoverage) entry["position_coverage"] = *step.positionCoverage;
       iterations.push_back(entry);
     }
@@ -53,19 +58,20 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
   report["level_reports"] = levels;
   report["synthesis_seconds"] = stats.synthesisSeconds;
   if (const auto& q = stats.quality) {
-    report["quality"] = {{"energy_axis", q->energyAxis},
-                         {"energy_oblique", q->energyOblique},
-                         {"energy_exponent", kEnergyExponent},
-                         {"energy_axis_squared", q->energyAxisSquared},
-                         {"energy_oblique_squared", q->energyObliqueSquared},
-                         {"energy_neighborhood", q->energyNeighborhood},
-                         {"position_coverage", q->positionCoverage},
-                         {"position_flatness", q->positionFlatness},
-                         {"position_variation", q->positionVariation},
-                         {"position_source", o.method == Method::ChenWang ? "copied pixel" : "dominant proposal"},
-                         {"index_coverage", q->indexCoverage},
-                         {"color_histogram_distance", q->colorHistogramDistance},
-                         {"seconds", q->seconds}};
+    report["quality"] = {
+        {"energy_axis", q->energyAxis},
+        {"energy_oblique", q->energyOblique},
+        {"energy_exponent", kEnergyExponent},
+        {"energy_axis_squared", q->energyAxisSquared},
+        {"energy_oblique_squared", q->energyObliqueSquared},
+        {"energy_neighborhood", q->energyNeighborhood},
+        {"position_coverage", q->positionCoverage},
+        {"position_flatness", q->positionFlatness},
+        {"position_variation", q->positionVariation},
+        {"position_source", o.method == Method::ChenWang ? "copied pixel" : "dominant proposal"},
+        {"index_coverage", q->indexCoverage},
+        {"color_histogram_distance", q->colorHistogramDistance},
+        {"seconds", q->seconds}};
   }
   report["seconds"] = stats.seconds;
   return report;
@@ -73,9 +79,12 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
 
 nlohmann::json runSynthesize(const SynthesizeJob& job) {
   namespace fs = std::filesystem;
-  if (fs::path(job.output).extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");
-  const fs::path parent = fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
-  if (!fs::is_directory(parent)) throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  if (fs::path(job.output).extension() != ".vdb")
+    throw InputError("output " + job.output + " must end in .vdb");
+  const fs::path parent =
+      fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
+  if (!fs::is_directory(parent))
+    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
 
   const cv::Mat exemplar = loadPhoto(job.exemplar);
   SynthesisOptions options = job.synthesis;
@@ -101,4 +110,4 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

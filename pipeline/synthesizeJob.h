@@ -17,7 +17,7 @@ struct SynthesizeJob {
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
   std::string commandLine;
-  bool progress = true;                ///< a progress line on stderr
+  bool progress = true;  ///< a progress line on stderr
 };
 
 /// The report's settings and statistics of a synthesis (snake_case keys, as every report).
@@ -26,4 +26,4 @@ nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisS
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesize(const SynthesizeJob& job);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -21,13 +21,20 @@ double sectionAreaFraction(const SolidVolume& volume) {
 nlohmann::json optionsJson(const ParticleTruthOptions& options) {
   nlohmann::json classes = nlohmann::json::array();
   for (const ParticleClass& c : options.classes)
-    classes.push_back({{"median_radius", c.meanRadius}, {"spread", c.radiusSpread}, {"share", c.share},
+    classes.push_back({{"median_radius", c.meanRadius},
+                       {"spread", c.radiusSpread},
+                       {"share", c.share},
                        {"srgb", {c.srgb[0], c.srgb[1], c.srgb[2]}}});
-  return {{"volume_fraction", options.volumeFraction}, {"classes", classes}, {"elongation", options.elongation},
-          {"flatten", options.flatten}, {"exponent", options.exponent}, {"blur", options.blur}, {"noise", options.noise}};
+  return {{"volume_fraction", options.volumeFraction},
+          {"classes", classes},
+          {"elongation", options.elongation},
+          {"flatten", options.flatten},
+          {"exponent", options.exponent},
+          {"blur", options.blur},
+          {"noise", options.noise}};
 }
 
-} // namespace
+}  // namespace
 
 nlohmann::json runTruth(const TruthJob& job) {
   ParticleTruth truth = makeParticleTruth(job.truth);  // refuses bad options before anything is written
@@ -57,4 +64,4 @@ nlohmann::json runTruth(const TruthJob& job) {
   return report;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

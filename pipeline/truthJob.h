@@ -18,4 +18,4 @@ struct TruthJob {
 /// area fraction, every particle's volume) into the folder.
 nlohmann::json runTruth(const TruthJob& job);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -14,7 +14,8 @@ namespace {
 // Squared distance from (x,y,z) to the box: a lower bound of the distance to anything inside it.
 std::int64_t squaredGapToBox(int x, int y, int z, const VoxelBox& box) {
   const auto gap = [](int v, int lo, int hi) { return std::int64_t(v < lo ? lo - v : v > hi ? v - hi : 0); };
-  const std::int64_t gx = gap(x, box.lo.x, box.hi.x), gy = gap(y, box.lo.y, box.hi.y), gz = gap(z, box.lo.z, box.hi.z);
+  const std::int64_t gx = gap(x, box.lo.x, box.hi.x), gy = gap(y, box.lo.y, box.hi.y),
+                     gz = gap(z, box.lo.z, box.hi.z);
   return gx * gx + gy * gy + gz * gz;
 }
 
@@ -35,9 +36,10 @@ public:
     const VoxelBox box = boundingBox(voxels);
     const int reach = int(std::ceil(std::sqrt(double(this->capKey()))));
     const Dims& d = this->dims_;
-    const VoxelBox region{{std::max(box.lo.x - reach, 0), std::max(box.lo.y - reach, 0), std::max(box.lo.z - reach, 0)},
-                          {std::min(box.hi.x + reach, d.x - 1), std::min(box.hi.y + reach, d.y - 1),
-                           std::min(box.hi.z + reach, d.z - 1)}};
+    const VoxelBox region{
+        {std::max(box.lo.x - reach, 0), std::max(box.lo.y - reach, 0), std::max(box.lo.z - reach, 0)},
+        {std::min(box.hi.x + reach, d.x - 1), std::min(box.hi.y + reach, d.y - 1),
+         std::min(box.hi.z + reach, d.z - 1)}};
     // Slices are evaluated in parallel; their changes are applied in slice order for determinism.
     std::vector<std::vector<std::pair<VoxelIndex, Key>>> changes(std::size_t(region.hi.z - region.lo.z + 1));
     tbb::parallel_for(region.lo.z, region.hi.z + 1,
@@ -63,10 +65,10 @@ private:
   std::vector<Voxel> boundary_;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius) {
   return makeWithNarrowestKey<BruteForceField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

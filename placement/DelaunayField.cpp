@@ -43,8 +43,10 @@ struct QueueSlot {
   bool pending = false;
 };
 
-using CellBase = CGAL::Triangulation_cell_base_with_info_3<QueueSlot, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>, CellBase, CGAL::Sequential_tag>;
+using CellBase = CGAL::Triangulation_cell_base_with_info_3<QueueSlot, Kernel,
+                                                           CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>, CellBase,
+                                                 CGAL::Sequential_tag>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 using Cell = Delaunay::Cell_handle;
 using Vertex = Delaunay::Vertex_handle;
@@ -72,8 +74,11 @@ Point pointOf(const Voxel& v) { return {double(v.x), double(v.y), double(v.z)}; 
 
 // A fixed offset in [-kJitter, kJitter] per axis, a function of the voxel alone.
 Point jitteredPointOf(const Voxel& v) {
-  const std::uint64_t key = (std::uint64_t(std::uint32_t(v.x)) << 42) ^ (std::uint64_t(std::uint32_t(v.y)) << 21) ^ std::uint32_t(v.z);
-  const auto offset = [key](std::uint64_t axis) { return kJitter * (double(deriveSeed(key, axis) >> 11) * 0x1.0p-53 * 2 - 1); };
+  const std::uint64_t key = (std::uint64_t(std::uint32_t(v.x)) << 42) ^
+                            (std::uint64_t(std::uint32_t(v.y)) << 21) ^ std::uint32_t(v.z);
+  const auto offset = [key](std::uint64_t axis) {
+    return kJitter * (double(deriveSeed(key, axis) >> 11) * 0x1.0p-53 * 2 - 1);
+  };
   return {v.x + offset(0), v.y + offset(1), v.z + offset(2)};
 }
 
@@ -86,7 +91,8 @@ std::vector<int> wallSamples(int n) {
 }
 
 std::vector<Point> wallPoints(Dims dims) {
-  const std::array<std::vector<int>, 3> samples{wallSamples(dims.x), wallSamples(dims.y), wallSamples(dims.z)};
+  const std::array<std::vector<int>, 3> samples{wallSamples(dims.x), wallSamples(dims.y),
+                                                wallSamples(dims.z)};
   const std::array<int, 3> size{dims.x, dims.y, dims.z};
   std::vector<std::array<int, 3>> points;
   for (int axis = 0; axis < 3; ++axis) {
@@ -112,8 +118,13 @@ std::vector<Point> wallPoints(Dims dims) {
 class DelaunayField final : public SpaciousnessField {
 public:
   DelaunayField(Dims dims, float maxRadius)
-      : dims_(dims), maxRadius_(maxRadius), capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
-        buckets_(std::size_t(capKey_) + 1), occupied_(dims.count()), sampled_(dims.count()), spotSeen_(dims.count()),
+      : dims_(dims),
+        maxRadius_(maxRadius),
+        capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
+        buckets_(std::size_t(capKey_) + 1),
+        occupied_(dims.count()),
+        sampled_(dims.count()),
+        spotSeen_(dims.count()),
         hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
                     (dims.z + kHintBlock - 1) / kHintBlock},
         hints_(hintBlocks_.count()) {
@@ -121,7 +132,8 @@ public:
     triangulation_.insert(walls.begin(), walls.end());
     for (auto v = triangulation_.finite_vertices_begin(); v != triangulation_.finite_vertices_end(); ++v)
       rememberHint(v);
-    for (auto c = triangulation_.finite_cells_begin(); c != triangulation_.finite_cells_end(); ++c) addCandidate(c);
+    for (auto c = triangulation_.finite_cells_begin(); c != triangulation_.finite_cells_end(); ++c)
+      addCandidate(c);
   }
 
   PlacerKind kind() const override { return PlacerKind::Delaunay; }
@@ -152,7 +164,8 @@ public:
     const Point p = pointOf(v);
     const Vertex nearest = triangulation_.nearest_vertex(p, hintCell(p));
     const double sample = std::sqrt(CGAL::squared_distance(p, nearest->point())) - kJitterLength;
-    const double bound = std::max(1.0, sample - double(slack()));  // a free voxel is a whole voxel from any other
+    const double bound =
+        std::max(1.0, sample - double(slack()));  // a free voxel is a whole voxel from any other
     return float(std::min({bound, double(wallDistance(dims_, v.x, v.y, v.z)), double(maxRadius_)}));
   }
 
@@ -170,7 +183,8 @@ public:
           continue;
         }
         swapEntries(bucket, taken++, j);
-        if (!spotSeen_.testAndSet(spot)) spots.push_back(dims_.voxel(spot));  // several cells may round to one spot
+        if (!spotSeen_.testAndSet(spot))
+          spots.push_back(dims_.voxel(spot));  // several cells may round to one spot
       }
       if (int(spots.size()) >= maxCount) break;
     }
@@ -217,7 +231,9 @@ private:
     };
     for (const Voxel& v : boundaryVoxels(voxels))
       if (facesFreeSpace(v)) ((v.x + v.y + v.z) % kSampleModulus == 0 ? take(v) : unsampled_.push_back(v));
-    const auto sampled = [&](int i, int j, int k) { return dims_.contains(i, j, k) && sampled_.test(dims_.index(i, j, k)); };
+    const auto sampled = [&](int i, int j, int k) {
+      return dims_.contains(i, j, k) && sampled_.test(dims_.index(i, j, k));
+    };
     for (const Voxel& v : unsampled_)
       if (!(sampled(v.x - 1, v.y, v.z) || sampled(v.x + 1, v.y, v.z) || sampled(v.x, v.y - 1, v.z) ||
             sampled(v.x, v.y + 1, v.z) || sampled(v.x, v.y, v.z - 1) || sampled(v.x, v.y, v.z + 1)))
@@ -228,16 +244,19 @@ private:
   // (the argument of boundaryVoxels, applied to all particles together): a boundary voxel pressed
   // against other particles or a wall on every open side adds nothing but points to triangulate.
   bool facesFreeSpace(const Voxel& v) const {
-    const auto free = [&](int i, int j, int k) { return dims_.contains(i, j, k) && !isOccupied(dims_.index(i, j, k)); };
-    return free(v.x - 1, v.y, v.z) || free(v.x + 1, v.y, v.z) || free(v.x, v.y - 1, v.z) || free(v.x, v.y + 1, v.z) ||
-           free(v.x, v.y, v.z - 1) || free(v.x, v.y, v.z + 1);
+    const auto free = [&](int i, int j, int k) {
+      return dims_.contains(i, j, k) && !isOccupied(dims_.index(i, j, k));
+    };
+    return free(v.x - 1, v.y, v.z) || free(v.x + 1, v.y, v.z) || free(v.x, v.y - 1, v.z) ||
+           free(v.x, v.y + 1, v.z) || free(v.x, v.y, v.z - 1) || free(v.x, v.y, v.z + 1);
   }
 
   std::size_t hintIndex(const Point& p) const {
     const auto block = [](double c, int blocks) {
       return std::clamp(int(std::floor(c)) / kHintBlock, 0, blocks - 1);
     };
-    return hintBlocks_.index(block(p.x(), hintBlocks_.x), block(p.y(), hintBlocks_.y), block(p.z(), hintBlocks_.z));
+    return hintBlocks_.index(block(p.x(), hintBlocks_.x), block(p.y(), hintBlocks_.y),
+                             block(p.z(), hintBlocks_.z));
   }
 
   void rememberHint(Vertex v) {
@@ -265,8 +284,8 @@ private:
       dropCandidate(c);
       c->info().pending = false;
     }
-    const Vertex v = triangulation_.insert_in_hole(p, conflicts_.begin(), conflicts_.end(), facets_.front().first,
-                                                   facets_.front().second);
+    const Vertex v = triangulation_.insert_in_hole(p, conflicts_.begin(), conflicts_.end(),
+                                                   facets_.front().first, facets_.front().second);
     const std::size_t before = pending_.size();
     triangulation_.incident_cells(v, std::back_inserter(pending_));
     for (std::size_t i = before; i < pending_.size(); ++i) pending_[i]->info().pending = true;
@@ -289,18 +308,20 @@ private:
   // occupied voxel, as long as the spot itself is empty. The paper subtracts 1 for the rounding;
   // the offset itself (at most sqrt(3)/2) is the exact amount.
   void addCandidate(Cell c) {
-    const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                            c->vertex(3)->point());
+    const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
+                                            c->vertex(2)->point(), c->vertex(3)->point());
     const auto inside = [](double x, int n) { return x >= -0.5 && x < n - 0.5; };
     if (!inside(centre.x(), dims_.x) || !inside(centre.y(), dims_.y) || !inside(centre.z(), dims_.z)) return;
-    const auto round = [](double x) { return int(std::floor(x + 0.5)); };  // lround(-0.5) would leave the volume
+    const auto round = [](double x) {
+      return int(std::floor(x + 0.5));
+    };  // lround(-0.5) would leave the volume
     const Voxel spot{round(centre.x()), round(centre.y()), round(centre.z())};
     const std::size_t index = dims_.index(spot);
     if (isOccupied(index)) return;
     const double radius = std::sqrt(CGAL::squared_distance(centre, c->vertex(0)->point()));
     const double offset = std::sqrt(CGAL::squared_distance(centre, pointOf(spot)));
-    const double value = std::min({radius - offset - kJitterLength, double(wallDistance(dims_, spot.x, spot.y, spot.z)),
-                                   double(maxRadius_)});
+    const double value = std::min({radius - offset - kJitterLength,
+                                   double(wallDistance(dims_, spot.x, spot.y, spot.z)), double(maxRadius_)});
     const double key = std::floor(value * kSteps);
     if (key < 1) return;
     std::vector<Entry>& bucket = buckets_[std::size_t(key)];
@@ -341,10 +362,10 @@ private:
   std::vector<Voxel> unsampled_;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius) {
   return std::make_unique<DelaunayField>(dims, maxRadius);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -71,10 +71,10 @@ private:
   std::vector<VoxelIndex> frontier_;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius) {
   return makeWithNarrowestKey<DiscreteVoronoiField>(std::uint64_t(std::ceil(maxRadius)), dims, maxRadius);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

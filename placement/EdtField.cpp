@@ -85,8 +85,10 @@ struct ParticleBounds {
 
 ParticleBounds boundsOf(const std::vector<Voxel>& voxels) {
   const VoxelBox box = boundingBox(voxels);
-  ParticleBounds b{box, (box.lo.x + box.hi.x) / 2.0, (box.lo.y + box.hi.y) / 2.0, (box.lo.z + box.hi.z) / 2.0, 0};
-  for (const Voxel& v : voxels) b.radius = std::max(b.radius, squared(v.x - b.cx) + squared(v.y - b.cy) + squared(v.z - b.cz));
+  ParticleBounds b{box, (box.lo.x + box.hi.x) / 2.0, (box.lo.y + box.hi.y) / 2.0, (box.lo.z + box.hi.z) / 2.0,
+                   0};
+  for (const Voxel& v : voxels)
+    b.radius = std::max(b.radius, squared(v.x - b.cx) + squared(v.y - b.cy) + squared(v.z - b.cz));
   b.radius = std::sqrt(b.radius);
   return b;
 }
@@ -98,8 +100,9 @@ double squaredGapBound(const VoxelBox& block, const ParticleBounds& p) {
                         squaredGap(block.lo.y, block.hi.y, p.box.lo.y, p.box.hi.y) +
                         squaredGap(block.lo.z, block.hi.z, p.box.lo.z, p.box.hi.z);
   const auto axis = [](double c, int lo, int hi) { return c < lo ? lo - c : c > hi ? c - hi : 0.0; };
-  const double toBlock = std::sqrt(squared(axis(p.cx, block.lo.x, block.hi.x)) + squared(axis(p.cy, block.lo.y, block.hi.y)) +
-                                   squared(axis(p.cz, block.lo.z, block.hi.z)));
+  const double toBlock =
+      std::sqrt(squared(axis(p.cx, block.lo.x, block.hi.x)) + squared(axis(p.cy, block.lo.y, block.hi.y)) +
+                squared(axis(p.cz, block.lo.z, block.hi.z)));
   const double ballGap = std::max(0.0, toBlock - p.radius - 1e-6);  // margin: a safe bound despite rounding
   return std::max(boxGap, ballGap * ballGap);
 }
@@ -110,7 +113,8 @@ public:
   EdtField(Dims dims, float maxRadius)
       : BucketField<Key>(dims, squaredDistanceValues(maxRadius),
                          [](int wall) { return std::uint64_t(wall) * std::uint64_t(wall); }),
-        blocks_{(dims.x + kBlock - 1) / kBlock, (dims.y + kBlock - 1) / kBlock, (dims.z + kBlock - 1) / kBlock},
+        blocks_{(dims.x + kBlock - 1) / kBlock, (dims.y + kBlock - 1) / kBlock,
+                (dims.z + kBlock - 1) / kBlock},
         blockMax_(blocks_.count()) {
     tbb::parallel_for(std::size_t(0), blocks_.count(), [&](std::size_t b) { blockMax_[b] = scanBlock(b); });
   }
@@ -194,7 +198,8 @@ private:
     const int sx = slabDims_.x, sy = slabDims_.y, py = p.hi.y - p.lo.y + 1, y0 = p.lo.y - sub_.lo.y;
     const std::ptrdiff_t plane = std::ptrdiff_t(sx) * sy;
     // Along x, only rows that hold particle voxels; along y, every line of the slab.
-    transformLines(py * slabDims_.z, sx, 1, [&](int line) { return (line / py) * plane + (y0 + line % py) * sx; });
+    transformLines(py * slabDims_.z, sx, 1,
+                   [&](int line) { return (line / py) * plane + (y0 + line % py) * sx; });
     transformLines(sx * slabDims_.z, sy, sx, [&](int line) { return (line / sx) * plane + line % sx; });
   }
 
@@ -221,11 +226,14 @@ private:
       const VoxelBox cells = blockBox(column.bx, column.by, 0);
       for (int y = cells.lo.y; y <= cells.hi.y; ++y)
         for (int x = cells.lo.x; x <= cells.hi.x; ++x) {
-          envelope.build(slab_.data() + (y - sub_.lo.y) * slabDims_.x + (x - sub_.lo.x), slabDims_.z, plane, p.lo.z);
+          envelope.build(slab_.data() + (y - sub_.lo.y) * slabDims_.x + (x - sub_.lo.x), slabDims_.z, plane,
+                         p.lo.z);
           for (std::size_t i = column.first; i < column.first + column.count; ++i)
-            most[i - column.first] = std::max(most[i - column.first], lowerLine(x, y, affected_[i], envelope, changes_[i]));
+            most[i - column.first] =
+                std::max(most[i - column.first], lowerLine(x, y, affected_[i], envelope, changes_[i]));
         }
-      for (std::size_t i = column.first; i < column.first + column.count; ++i) blockMax_[affected_[i]] = most[i - column.first];
+      for (std::size_t i = column.first; i < column.first + column.count; ++i)
+        blockMax_[affected_[i]] = most[i - column.first];
     });
   }
 
@@ -255,10 +263,10 @@ private:
   std::vector<std::uint32_t> slab_;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius) {
   return makeWithNarrowestKey<EdtField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

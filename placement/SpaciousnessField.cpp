@@ -14,10 +14,14 @@ PlacerKind parsePlacerKind(const std::string& name) {
 
 const char* placerName(PlacerKind kind) {
   switch (kind) {
-  case PlacerKind::Discrete: return "discrete";
-  case PlacerKind::Brute: return "brute";
-  case PlacerKind::Edt: return "edt";
-  case PlacerKind::Delaunay: return "delaunay";
+    case PlacerKind::Discrete:
+      return "discrete";
+    case PlacerKind::Brute:
+      return "brute";
+    case PlacerKind::Edt:
+      return "edt";
+    case PlacerKind::Delaunay:
+      return "delaunay";
   }
   return "unknown";
 }
@@ -25,12 +29,16 @@ const char* placerName(PlacerKind kind) {
 std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius) {
   detail::checkFieldArguments(dims, maxRadius);
   switch (kind) {
-  case PlacerKind::Discrete: return detail::makeDiscreteVoronoiField(dims, maxRadius);
-  case PlacerKind::Brute: return detail::makeBruteForceField(dims, maxRadius);
-  case PlacerKind::Edt: return detail::makeEdtField(dims, maxRadius);
-  case PlacerKind::Delaunay: return detail::makeDelaunayField(dims, maxRadius);
+    case PlacerKind::Discrete:
+      return detail::makeDiscreteVoronoiField(dims, maxRadius);
+    case PlacerKind::Brute:
+      return detail::makeBruteForceField(dims, maxRadius);
+    case PlacerKind::Edt:
+      return detail::makeEdtField(dims, maxRadius);
+    case PlacerKind::Delaunay:
+      return detail::makeDelaunayField(dims, maxRadius);
   }
   throw InputError("unknown placer kind");
 }
 
-} // namespace solidtex
+}  // namespace solidtex

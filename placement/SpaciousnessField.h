@@ -53,4 +53,4 @@ public:
 /// The field of the given kind over an empty volume.
 std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius);
 
-} // namespace solidtex
+}  // namespace solidtex

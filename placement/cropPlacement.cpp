@@ -6,7 +6,8 @@ namespace solidtex {
 
 PlacementResult cropPlacement(const PlacementResult& placement, const Voxel& lo, const Dims& dims) {
   const Dims& from = placement.dims;
-  if (lo.x < 0 || lo.y < 0 || lo.z < 0 || lo.x + dims.x > from.x || lo.y + dims.y > from.y || lo.z + dims.z > from.z)
+  if (lo.x < 0 || lo.y < 0 || lo.z < 0 || lo.x + dims.x > from.x || lo.y + dims.y > from.y ||
+      lo.z + dims.z > from.z)
     throw std::invalid_argument("cropPlacement: the box is not inside the placement's volume");
   PlacementResult crop;
   crop.dims = dims;
@@ -36,7 +37,8 @@ PlacementResult cropPlacement(const PlacementResult& placement, const Voxel& lo,
   crop.rejectedPerBin = placement.rejectedPerBin;
   crop.volumeFraction = double(occupied) / double(dims.count());
   for (std::size_t b = 0; b < crop.volumeHistogram.size(); ++b)
-    crop.volumeHistogram[b] = crop.particles.empty() ? 0 : crop.placedPerBin[b] / double(crop.particles.size());
+    crop.volumeHistogram[b] =
+        crop.particles.empty() ? 0 : crop.placedPerBin[b] / double(crop.particles.size());
   crop.stopReason = placement.stopReason;
   crop.shrinkSteps = placement.shrinkSteps;
   crop.smallestScale = placement.smallestScale;
@@ -44,9 +46,10 @@ PlacementResult cropPlacement(const PlacementResult& placement, const Voxel& lo,
   if (placement.particlesBeforeShrinking >= 0) {
     crop.particlesBeforeShrinking = 0;
     for (const PlacedParticle& p : placement.particles)
-      if (p.id <= placement.particlesBeforeShrinking && inside[std::size_t(p.id)] > 0) ++crop.particlesBeforeShrinking;
+      if (p.id <= placement.particlesBeforeShrinking && inside[std::size_t(p.id)] > 0)
+        ++crop.particlesBeforeShrinking;
   }
   return crop;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,4 +10,4 @@ namespace solidtex {
 /// volume fraction are those of the box; the stop reason and shrinking are kept.
 PlacementResult cropPlacement(const PlacementResult& placement, const Voxel& lo, const Dims& dims);
 
-} // namespace solidtex
+}  // namespace solidtex

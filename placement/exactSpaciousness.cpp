@@ -5,8 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
+#include <nanoflann.hpp>
 
 namespace solidtex {
 namespace {
@@ -17,10 +17,13 @@ struct VoxelCloud {
   std::size_t kdtree_get_point_count() const { return points.size(); }
   float kdtree_get_pt(std::size_t i, std::size_t axis) const { return points[i][axis]; }
   template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
 };
 
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, VoxelCloud>, VoxelCloud, 3>;
+using Tree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, VoxelCloud>, VoxelCloud, 3>;
 
 // A nearest occupied voxel q of a free voxel p has a free face neighbour: the step from q towards p
 // along any axis where they differ is nearer to p, so it cannot be occupied.
@@ -31,7 +34,8 @@ VoxelCloud boundaryOf(const Dims& dims, const std::vector<std::int32_t>& ids) {
     if (ids[i] == 0) continue;
     const Voxel v = dims.voxel(i);
     for (const auto& s : step)
-      if (dims.contains(v.x + s[0], v.y + s[1], v.z + s[2]) && ids[dims.index(v.x + s[0], v.y + s[1], v.z + s[2])] == 0) {
+      if (dims.contains(v.x + s[0], v.y + s[1], v.z + s[2]) &&
+          ids[dims.index(v.x + s[0], v.y + s[1], v.z + s[2])] == 0) {
         cloud.points.push_back({float(v.x), float(v.y), float(v.z)});
         break;
       }
@@ -39,9 +43,10 @@ VoxelCloud boundaryOf(const Dims& dims, const std::vector<std::int32_t>& ids) {
   return cloud;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<float> exactSpaciousness(const Dims& dims, const std::vector<std::int32_t>& ids, float maxRadius) {
+std::vector<float> exactSpaciousness(const Dims& dims, const std::vector<std::int32_t>& ids,
+                                     float maxRadius) {
   if (ids.size() != dims.count()) throw std::invalid_argument("exactSpaciousness: ids do not match the dims");
   const VoxelCloud cloud = boundaryOf(dims, ids);
   const Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));  // builds the index
@@ -69,4 +74,4 @@ std::vector<float> exactSpaciousness(const Dims& dims, const std::vector<std::in
   return out;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -12,4 +12,4 @@ namespace solidtex {
 /// (nanoflann) of the occupied voxels that have a free face neighbour, which always hold the nearest.
 std::vector<float> exactSpaciousness(const Dims& dims, const std::vector<std::int32_t>& ids, float maxRadius);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -33,7 +33,7 @@ constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
 constexpr double kFirstPassShare = 0.85;
 constexpr double kShrink = 0.85;  // particles' size per shrink step once nothing fits
 constexpr int kMaxShrinks = 3;
-constexpr double kPilotPrecision = 0.03;  // standard error of the mean / mean
+constexpr double kPilotPrecision = 0.03;              // standard error of the mean / mean
 constexpr std::uint64_t kPilotStream = 0x70696c6f74;  // "pilot"
 constexpr std::uint64_t kPairStream = 0x7061697273;   // "pairs"
 
@@ -58,7 +58,8 @@ BinPairs pairsPerBin(const ExemplarStats& stats, const std::vector<double>& part
   }
   BinPairs pairs;
   for (int b = 0; b < kBins; ++b)
-    for (const auto& [size, weight] : weights[std::size_t(b)]) pairs[std::size_t(b)].push_back({size.first, size.second, weight});
+    for (const auto& [size, weight] : weights[std::size_t(b)])
+      pairs[std::size_t(b)].push_back({size.first, size.second, weight});
   return pairs;
 }
 
@@ -70,7 +71,8 @@ double totalWeight(const std::vector<WeightedPair>& pairs) {
 
 // One of `candidates` (indices into pairs), drawn with probability proportional to its pair's weight;
 // returns its position in `candidates`.
-std::size_t drawByWeight(const std::vector<WeightedPair>& pairs, const std::vector<std::size_t>& candidates, Rng& rng) {
+std::size_t drawByWeight(const std::vector<WeightedPair>& pairs, const std::vector<std::size_t>& candidates,
+                         Rng& rng) {
   double total = 0;
   for (const std::size_t c : candidates) total += pairs[c].weight;
   double draw = uniform01(rng) * total;
@@ -81,18 +83,24 @@ std::size_t drawByWeight(const std::vector<WeightedPair>& pairs, const std::vect
   return candidates.size() - 1;
 }
 
-void checkOptions(const ExemplarStats& stats, const PlacementOptions& options, const SpaciousnessField& field) {
+void checkOptions(const ExemplarStats& stats, const PlacementOptions& options,
+                  const SpaciousnessField& field) {
   const auto& w = options.particleWeights;
-  if (!w.empty() && (w.size() != stats.particles.size() ||
-                     std::any_of(w.begin(), w.end(), [](double v) { return !(v >= 0) || !std::isfinite(v); }) ||
-                     !(std::accumulate(w.begin(), w.end(), 0.0) > 0)))
-    throw InputError("placement: particle weights must be one non-negative number per photo particle, not all 0");
+  if (!w.empty() &&
+      (w.size() != stats.particles.size() ||
+       std::any_of(w.begin(), w.end(), [](double v) { return !(v >= 0) || !std::isfinite(v); }) ||
+       !(std::accumulate(w.begin(), w.end(), 0.0) > 0)))
+    throw InputError(
+        "placement: particle weights must be one non-negative number per photo particle, not all 0");
   if (!(options.voxelsPerPixel > 0) || !std::isfinite(options.voxelsPerPixel))
-    throw InputError("placement: voxels per pixel must be positive, got " + std::to_string(options.voxelsPerPixel));
+    throw InputError("placement: voxels per pixel must be positive, got " +
+                     std::to_string(options.voxelsPerPixel));
   if (!(options.sizeFactor > 0) || !std::isfinite(options.sizeFactor))
-    throw InputError("placement: the size factor must be positive, got " + std::to_string(options.sizeFactor));
+    throw InputError("placement: the size factor must be positive, got " +
+                     std::to_string(options.sizeFactor));
   if (options.maxParticles < 0)
-    throw InputError("placement: the particle limit must not be negative, got " + std::to_string(options.maxParticles));
+    throw InputError("placement: the particle limit must not be negative, got " +
+                     std::to_string(options.maxParticles));
   if (options.candidatesPerTry < 1)
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
@@ -122,7 +130,8 @@ struct PhasePlan {
 // The phases in their order; each one starts when no bin of the one before fits any more.
 std::vector<PhasePlan> phasePlans(const PlacementOptions& options) {
   const bool weighted = !options.particleWeights.empty();
-  std::vector<PhasePlan> plans{{0, options.voxelsPerPixel * (weighted ? options.sizeFactor : 1), !weighted, 0}};
+  std::vector<PhasePlan> plans{
+      {0, options.voxelsPerPixel * (weighted ? options.sizeFactor : 1), !weighted, 0}};
   // Shares other than the photo's can leave gaps only the photo's other sizes fit (a mix without
   // small particles jams early): the photo's shares fill the rest.
   if (weighted) plans.push_back({1, options.voxelsPerPixel, true, 0});
@@ -138,8 +147,10 @@ std::vector<PhasePlan> phasePlans(const PlacementOptions& options) {
 struct Phase {
   Phase(const PhasePlan& plan, const ExemplarStats& stats, const ParticleFactory& factory,
         const PlacementOptions& options)
-      : plan(plan), pairs(pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights)),
-        passShare(plan.index == 0 ? kFirstPassShare : 1), shapes(factory, options.seed, plan.index, plan.scale) {
+      : plan(plan),
+        pairs(pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights)),
+        passShare(plan.index == 0 ? kFirstPassShare : 1),
+        shapes(factory, options.seed, plan.index, plan.scale) {
     double total = 0;
     for (int b = 0; b < kBins; ++b) total += share[std::size_t(b)] = totalWeight(pairs[std::size_t(b)]);
     for (int b = 0; b < kBins; ++b) {
@@ -200,11 +211,16 @@ class Placer {
 public:
   Placer(const ExemplarStats& stats, const ParticleFactory& factory, SpaciousnessField& field,
          const PlacementOptions& options)
-      : stats_(stats), factory_(factory), field_(field), options_(options),
-        rng_(deriveSeed(options.seed, kPlacementStream)), pairRng_(deriveSeed(options.seed, kPairStream)),
+      : stats_(stats),
+        factory_(factory),
+        field_(field),
+        options_(options),
+        rng_(deriveSeed(options.seed, kPlacementStream)),
+        pairRng_(deriveSeed(options.seed, kPairStream)),
         counted_(options.counted.value_or(VolumeBox{{0, 0, 0}, options.dims})),
         targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims.count()))),
-        occupied_(options.dims.count()), tried_(options.dims.count()) {
+        occupied_(options.dims.count()),
+        tried_(options.dims.count()) {
     result_.dims = options.dims;
     result_.ids.assign(options.dims.count(), 0);
   }
@@ -235,7 +251,8 @@ private:
     if (phase_) phase_->shapes.finish();
     phase_.emplace(plan, stats_, factory_, options_);
     if (plan.shrinks == 0) return;
-    if (result_.particlesBeforeShrinking < 0) result_.particlesBeforeShrinking = int(result_.particles.size());
+    if (result_.particlesBeforeShrinking < 0)
+      result_.particlesBeforeShrinking = int(result_.particles.size());
     result_.shrinkSteps = plan.shrinks;
     result_.smallestScale = std::pow(kShrink, plan.shrinks);
   }
@@ -258,7 +275,8 @@ private:
       // places a particle or closes a bin, and the loop ends.
       phase.roundUp = result_.particles.size() == placedBefore;
       phase.passShare = 1;
-      if (std::none_of(phase.open.begin(), phase.open.end(), [](bool open) { return open; })) return std::nullopt;
+      if (std::none_of(phase.open.begin(), phase.open.end(), [](bool open) { return open; }))
+        return std::nullopt;
     }
   }
 
@@ -272,7 +290,8 @@ private:
   // could still fill the rest: it waits (the volume must end as close to the fraction as it can).
   bool overfills(int b) const {
     const double missing = targetVoxels_ - double(placedVoxels_);
-    if (phase_->roundUp || phase_->expectedVolume(b) <= 2 * missing) return false;  // after a pass that placed nothing, anything goes
+    if (phase_->roundUp || phase_->expectedVolume(b) <= 2 * missing)
+      return false;  // after a pass that placed nothing, anything goes
     for (int i = 0; i < b; ++i)
       if (phase_->open[std::size_t(i)]) return true;
     return false;
@@ -350,8 +369,9 @@ private:
     triedSpots_.clear();
     std::optional<Voxel> found;
     if (options_.arrangement == Arrangement::Uniform)
-      found = firstFit(shape, field_.randomFit(std::min(cap, shape.innerRadius), options_.candidatesPerTry, rng_),
-                       std::min(cap, shape.innerRadius));
+      found =
+          firstFit(shape, field_.randomFit(std::min(cap, shape.innerRadius), options_.candidatesPerTry, rng_),
+                   std::min(cap, shape.innerRadius));
     for (int step = 0; step < kRadiusSteps && !found; ++step) {
       const float t = float(step) / float(kRadiusSteps - 1);
       const float radius = std::min(cap, shape.innerRadius + t * (shape.outerRadius - shape.innerRadius));
@@ -365,12 +385,15 @@ private:
   }
 
   // The first of the spots, each valued at least `radius` by the field, where the shape fits.
-  std::optional<Voxel> firstFit(const detail::FitShape& shape, const std::vector<Voxel>& spots, float radius) {
+  std::optional<Voxel> firstFit(const detail::FitShape& shape, const std::vector<Voxel>& spots,
+                                float radius) {
     for (const Voxel& spot : spots) {
       if (tried_.testAndSet(options_.dims.index(spot))) continue;
       triedSpots_.push_back(spot);
-      // The field's spots hold at least `radius` less the slack: a free bound, where at() may be a costly query.
-      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims)) return spot;
+      // The field's spots hold at least `radius` less the slack: a free bound, where at() may be a costly
+      // query.
+      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims))
+        return spot;
     }
     return std::nullopt;
   }
@@ -390,7 +413,8 @@ private:
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
     fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
-    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale});
+    result_.particles.push_back(
+        {id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += counted;
     // A particle counts by its share inside the counted box: the margin's walls keep large particles
@@ -409,7 +433,8 @@ private:
     result_.volumeFraction = fraction();
     const auto placed = double(result_.particles.size());
     for (int b = 0; b < kBins; ++b)
-      result_.volumeHistogram[std::size_t(b)] = placed > 0 ? result_.placedPerBin[std::size_t(b)] / placed : 0;
+      result_.volumeHistogram[std::size_t(b)] =
+          placed > 0 ? result_.placedPerBin[std::size_t(b)] / placed : 0;
     if (options_.progress) options_.progress(result_.volumeFraction, int(result_.particles.size()));
     return std::move(result_);
   }
@@ -418,15 +443,16 @@ private:
   const ParticleFactory& factory_;
   SpaciousnessField& field_;
   const PlacementOptions& options_;
-  Rng rng_;      ///< best-fit draws
-  Rng pairRng_;  ///< the order pairs are tried in
-  VolumeBox counted_;                          ///< where the fraction and the particles per bin are counted
+  Rng rng_;            ///< best-fit draws
+  Rng pairRng_;        ///< the order pairs are tried in
+  VolumeBox counted_;  ///< where the fraction and the particles per bin are counted
   double targetVoxels_ = 0;
-  std::size_t placedVoxels_ = 0;               ///< inside counted_
-  std::array<double, kBins> countedPerBin_{};  ///< particles placed in every phase, each by its share inside counted_
+  std::size_t placedVoxels_ = 0;  ///< inside counted_
+  std::array<double, kBins>
+      countedPerBin_{};  ///< particles placed in every phase, each by its share inside counted_
   PlacementResult result_;
   detail::VoxelBits occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
-  detail::VoxelBits tried_;  ///< spots the current shape was tried at (their words are cleared after)
+  detail::VoxelBits tried_;     ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
   std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
   std::optional<Phase> phase_;
@@ -435,7 +461,7 @@ private:
   tbb::task_group fieldUpdate_;
 };
 
-} // namespace
+}  // namespace
 
 Arrangement parseArrangement(const std::string& name) {
   if (name == "best-fit") return Arrangement::BestFit;
@@ -453,4 +479,4 @@ PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFact
   return Placer(stats, factory, field, options).run();
 }
 
-} // namespace solidtex
+}  // namespace solidtex

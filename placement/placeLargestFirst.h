@@ -35,29 +35,30 @@ struct PlacementOptions {
   /// Where the area fraction is reached and counted, when the volume is a margin around the solid
   /// that will be cut out of it (particles then run through the solid's faces); empty: everywhere.
   std::optional<VolumeBox> counted;
-  double voxelsPerPixel = 1;      ///< photo pixels to voxels
+  double voxelsPerPixel = 1;  ///< photo pixels to voxels
   std::uint64_t seed = 1;
-  int candidatesPerTry = 256;     ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
+  int candidatesPerTry = 256;  ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
   Arrangement arrangement = Arrangement::Uniform;
-  int maxParticles = 0;           ///< stop after this many particles; 0: no limit
+  int maxParticles = 0;  ///< stop after this many particles; 0: no limit
   /// Each photo particle's share of the 3D particles (per ExemplarStats::particles index); empty: the
   /// photo's frequencies (the paper's rule). When no bin of these shares fits any more before the
   /// area fraction is reached, the photo's frequencies fill the rest, at the photo's sizes.
   std::vector<double> particleWeights;
-  double sizeFactor = 1;          ///< with particleWeights: their particles are this many times the photo's sizes
-  /// Called now and then, while the field may be taking the last particle: it must not read the field. May be empty.
+  double sizeFactor = 1;  ///< with particleWeights: their particles are this many times the photo's sizes
+  /// Called now and then, while the field may be taking the last particle: it must not read the field. May be
+  /// empty.
   std::function<void(double fraction, int placed)> progress;
 };
 
 /// One particle in the volume.
 struct PlacedParticle {
-  int id = 0;                     ///< 1..P, as in the id grid
-  Voxel origin;                   ///< the volume voxel of the shape's local (0,0,0)
-  Dims box;                       ///< the shape's tight box, voxels
-  int source = -1;                ///< index into ExemplarStats::particles (colour, residual)
-  int bin = 0;                    ///< area-histogram bin it was made for
+  int id = 0;       ///< 1..P, as in the id grid
+  Voxel origin;     ///< the volume voxel of the shape's local (0,0,0)
+  Dims box;         ///< the shape's tight box, voxels
+  int source = -1;  ///< index into ExemplarStats::particles (colour, residual)
+  int bin = 0;      ///< area-histogram bin it was made for
   std::size_t voxelCount = 0;
-  double voxelsPerPixel = 1;      ///< the scale it was made at: its photo particle's pixels to voxels
+  double voxelsPerPixel = 1;  ///< the scale it was made at: its photo particle's pixels to voxels
 };
 
 struct PlacementResult {
@@ -65,12 +66,13 @@ struct PlacementResult {
   std::vector<std::int32_t> ids;  ///< dims.count(), 0 background, 1..P
   std::vector<PlacedParticle> particles;
   std::array<int, 10> placedPerBin{};
-  std::array<int, 10> rejectedPerBin{};  ///< (w,h) tries that found no spot
-  double volumeFraction = 0;       ///< of the counted box
+  std::array<int, 10> rejectedPerBin{};      ///< (w,h) tries that found no spot
+  double volumeFraction = 0;                 ///< of the counted box
   std::array<double, 10> volumeHistogram{};  ///< ratios of placed particles per bin of volume (paper Fig. 10)
-  std::string stopReason;          ///< "area fraction reached" | "particle limit reached" | "no bin fits any more ..."
-  int shrinkSteps = 0;             ///< times the photo's sizes were shrunk to fill a crowded volume
-  double smallestScale = 1;        ///< the last shrink's size factor
+  std::string
+      stopReason;       ///< "area fraction reached" | "particle limit reached" | "no bin fits any more ..."
+  int shrinkSteps = 0;  ///< times the photo's sizes were shrunk to fill a crowded volume
+  double smallestScale = 1;           ///< the last shrink's size factor
   int particlesBeforeShrinking = -1;  ///< particles placed before the first shrink; -1: none
 };
 
@@ -81,4 +83,4 @@ struct PlacementResult {
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
                                   SpaciousnessField& field, const PlacementOptions& options);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -46,7 +46,8 @@ SectionSample cutAtRandom(const std::vector<Eigen::Vector3d>& centres, std::vect
   }
   const double width = hi - lo + 1;
   const double at = lo - 0.5 + uniform01(rng) * width;
-  const auto inSlab = std::count_if(along.begin(), along.end(), [&](double t) { return std::abs(t - at) < 0.5; });
+  const auto inSlab =
+      std::count_if(along.begin(), along.end(), [&](double t) { return std::abs(t - at) < 0.5; });
   return {0, double(inSlab), width};
 }
 
@@ -90,8 +91,9 @@ std::vector<int> samplesPerClass(const std::vector<SectionSample>& samples, int 
 }
 
 // KS between the photo's areas and the sections predicted for 3D class shares x at `factor`.
-double predictedKs(const std::vector<SectionSample>& samples, const std::vector<int>& perClass, double minArea,
-                   double factor, const Eigen::VectorXd& x, const std::vector<std::pair<double, double>>& photo) {
+double predictedKs(const std::vector<SectionSample>& samples, const std::vector<int>& perClass,
+                   double minArea, double factor, const Eigen::VectorXd& x,
+                   const std::vector<std::pair<double, double>>& photo) {
   std::vector<std::pair<double, double>> predicted;  // (area, weight)
   forEachSection(samples, perClass, minArea, factor, [&](int c, double area, double weight) {
     if (x[c] > 0) predicted.emplace_back(area, x[c] * weight);
@@ -122,7 +124,7 @@ double borderCorrection(const ExemplarStats& stats, const Particle2D& p) {
   return free > 0 && stats.imageWidth > 0 ? double(stats.imageWidth) * stats.imageHeight / free : 1.0;
 }
 
-} // namespace
+}  // namespace
 
 Sizing parseSizing(const std::string& name) {
   if (name == "bbox") return Sizing::Bbox;
@@ -140,7 +142,9 @@ int AreaClasses::classOfArea(double area) const {
 
 AreaClasses areaClassesOf(const ExemplarStats& stats, int classes) {
   std::vector<std::size_t> counted = statisticalParticles(stats.particles);
-  std::erase_if(counted, [&](std::size_t i) { return stats.particles[i].box.width <= 0 || stats.particles[i].box.height <= 0; });
+  std::erase_if(counted, [&](std::size_t i) {
+    return stats.particles[i].box.width <= 0 || stats.particles[i].box.height <= 0;
+  });
   if (counted.empty()) throw InputError("section sizing: the photo has no particle to take sizes from");
   double lo = INFINITY, hi = 0;
   for (std::size_t i : counted) {
@@ -160,7 +164,8 @@ AreaClasses areaClassesOf(const ExemplarStats& stats, int classes) {
 
 std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, const ParticleFactory& factory,
                                                   const AreaClasses& classes, double voxelsPerPixel,
-                                                  std::uint64_t seed, int shapesPerClass, int planesPerShape) {
+                                                  std::uint64_t seed, int shapesPerClass,
+                                                  int planesPerShape) {
   std::vector<std::vector<std::size_t>> members(std::size_t(classes.count()));
   int largestSide = 1;
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
@@ -181,12 +186,13 @@ std::vector<SectionSample> sampleParticleSections(const ExemplarStats& stats, co
   return out;
 }
 
-Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
-                              double sizeFactor) {
+Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const AreaClasses& classes,
+                              double minArea, double sizeFactor) {
   const std::vector<int> perClass = samplesPerClass(samples, classes.count());
   Eigen::MatrixXd kernel = Eigen::MatrixXd::Zero(classes.count(), classes.count());
-  forEachSection(samples, perClass, minArea, sizeFactor,
-                 [&](int c, double area, double weight) { kernel(std::max(0, classes.classOfArea(area)), c) += weight; });
+  forEachSection(samples, perClass, minArea, sizeFactor, [&](int c, double area, double weight) {
+    kernel(std::max(0, classes.classOfArea(area)), c) += weight;
+  });
   // A class whose sections mostly fall below the photo's specks is all but invisible in it: the
   // photo cannot say how many there are, and an unfolding would keep whatever it started with.
   Eigen::VectorXd cut = Eigen::VectorXd::Zero(classes.count());
@@ -196,7 +202,8 @@ Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const A
   return kernel;
 }
 
-Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::VectorXd& observed, int iterations) {
+Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::VectorXd& observed,
+                               int iterations) {
   const Eigen::Index n = kernel.cols();
   const Eigen::VectorXd efficiency = kernel.colwise().sum().transpose();
   const Eigen::ArrayXd made = (efficiency.array() > 0).cast<double>();
@@ -213,7 +220,8 @@ Eigen::VectorXd unfoldSections(const Eigen::MatrixXd& kernel, const Eigen::Vecto
     // The S of EMS: each class passes kSmoothing of its share to each neighbour (the ends keep theirs).
     Eigen::VectorXd smooth = x;
     for (Eigen::Index j = 0; j < n; ++j)
-      smooth[j] = (1 - 2 * kSmoothing) * x[j] + kSmoothing * ((j > 0 ? x[j - 1] : x[j]) + (j + 1 < n ? x[j + 1] : x[j]));
+      smooth[j] = (1 - 2 * kSmoothing) * x[j] +
+                  kSmoothing * ((j > 0 ? x[j - 1] : x[j]) + (j + 1 < n ? x[j + 1] : x[j]));
     x = (smooth.array() * made).matrix();
     const double total = x.sum();
     if (!(total > 0)) break;
@@ -289,7 +297,8 @@ PhotoSections resampled(const PhotoSections& photo, const AreaClasses& classes, 
 double impliedMeanVolume(const Fit& fit, const AreaClasses& classes) {
   double volume = 0, total = 0;
   for (int c = 0; c < classes.count(); ++c) {
-    const double area = std::sqrt(classes.edges[std::size_t(c)] * classes.edges[std::size_t(c) + 1]) * fit.factor * fit.factor;
+    const double area = std::sqrt(classes.edges[std::size_t(c)] * classes.edges[std::size_t(c) + 1]) *
+                        fit.factor * fit.factor;
     volume += fit.shares[c] * std::pow(area, 1.5);
     total += fit.shares[c];
   }
@@ -298,8 +307,9 @@ double impliedMeanVolume(const Fit& fit, const AreaClasses& classes) {
 
 // How far the 3D sizes could move with another photo of as many particles: the fit redone on
 // bootstrap resamples of the photo's particles (the particle shapes' sections kept).
-SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
-                            const PhotoSections& photo, const Fit& fit, int bootstraps, std::uint64_t seed) {
+SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const AreaClasses& classes,
+                            double minArea, const PhotoSections& photo, const Fit& fit, int bootstraps,
+                            std::uint64_t seed) {
   const auto count = static_cast<std::size_t>(bootstraps);
   std::vector<double> factors(count), volumes(count);
   tbb::parallel_for(0, bootstraps, [&](int b) {
@@ -320,16 +330,18 @@ SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const Are
   return u;
 }
 
-} // namespace
+}  // namespace
 
-SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                               std::uint64_t seed, int bootstraps) {
+SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory& factory,
+                               double voxelsPerPixel, std::uint64_t seed, int bootstraps) {
   const AreaClasses classes = areaClassesOf(stats);
   const PhotoSections photo = photoSectionsOf(stats, classes);
-  const std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
+  const std::vector<SectionSample> samples =
+      sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
   const Fit fit = smallestGoodFit(samples, classes, stats.minArea, photo);
   SectionSizing sizing;
-  if (bootstraps > 0) sizing.uncertainty = bootstrap(samples, classes, stats.minArea, photo, fit, bootstraps, seed);
+  if (bootstraps > 0)
+    sizing.uncertainty = bootstrap(samples, classes, stats.minArea, photo, fit, bootstraps, seed);
   sizing.sizeFactor = fit.factor;
   sizing.predictedKs = fit.ks;
   // A class's share goes to its photo particles as the border correction weighs them, so within a
@@ -337,10 +349,12 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
   sizing.particleWeights.assign(stats.particles.size(), 0);
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     if (const int c = classes.classOf[i]; c >= 0) {
-      sizing.particleWeights[i] = fit.shares[c] * borderCorrection(stats, stats.particles[i]) / photo.perClass[c];
-      sizing.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += sizing.particleWeights[i];
+      sizing.particleWeights[i] =
+          fit.shares[c] * borderCorrection(stats, stats.particles[i]) / photo.perClass[c];
+      sizing.binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] +=
+          sizing.particleWeights[i];
     }
   return sizing;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -40,9 +40,10 @@ void checkPhoto(const cv::Mat& photo, const std::string& name) {
     throw InputError(name + ": photo is too small to segment");
 }
 
-} // namespace
+}  // namespace
 
-ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name, const SegmentationOptions& options) {
+ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
+                              const SegmentationOptions& options) {
   checkPhoto(photoSrgb, name);
   const double minArea = minAreaFor(photoSrgb.size(), options);
   const cv::Mat linear = detail::srgbToLinear(photoSrgb);
@@ -56,8 +57,9 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
   stats.minArea = minArea;
   stats.particles = detail::measureParticles(labels, linear, minArea);
   if (stats.particles.empty())
-    throw InputError(name + ": no particles found (nothing of at least " + std::to_string(int(std::ceil(minArea))) +
-                     " pixels stands out from the background; give a mask, white = particle, or a smaller minimum area)");
+    throw InputError(
+        name + ": no particles found (nothing of at least " + std::to_string(int(std::ceil(minArea))) +
+        " pixels stands out from the background; give a mask, white = particle, or a smaller minimum area)");
   detail::measureBackground(stats, linear);
   std::vector<const Particle2D*> counted;
   for (std::size_t i : statisticalParticles(stats.particles)) counted.push_back(&stats.particles[i]);
@@ -70,4 +72,4 @@ ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions
   return analyzeExemplar(loadPhoto(path), std::filesystem::path(path).filename().string(), options);
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,10 +10,10 @@ namespace solidtex {
 
 /// How the photo is split into particles and background.
 struct SegmentationOptions {
-  std::optional<std::string> maskPath; ///< white = particle; replaces the automatic separation
-  bool invert = false;                 ///< swap what the automatic separation (or the mask) calls particle and background
-  bool split = true;                   ///< split touching particles (distance transform + watershed)
-  double minArea = -1;                 ///< pixels; < 0 means max(8, image area / 10000)
+  std::optional<std::string> maskPath;  ///< white = particle; replaces the automatic separation
+  bool invert = false;  ///< swap what the automatic separation (or the mask) calls particle and background
+  bool split = true;    ///< split touching particles (distance transform + watershed)
+  double minArea = -1;  ///< pixels; < 0 means max(8, image area / 10000)
 };
 
 /// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Automatic separation:
@@ -21,9 +21,10 @@ struct SegmentationOptions {
 /// colour distance from the background (lighting evened out), with edges deciding the unclear
 /// pixels. A particle is everything inside its outer outline (holes filled). Deterministic.
 /// Throws InputError when no particle is found.
-ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name, const SegmentationOptions& options);
+ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
+                              const SegmentationOptions& options);
 
 /// loadPhoto + analyzeExemplar.
 ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions& options);
 
-} // namespace solidtex
+}  // namespace solidtex

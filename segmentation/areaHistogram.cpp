@@ -26,15 +26,17 @@ namespace detail {
 AreaHistogram buildAreaHistogram(const std::vector<const Particle2D*>& particles) {
   AreaHistogram h;
   if (particles.empty()) return h;
-  const auto [lo, hi] = std::minmax_element(particles.begin(), particles.end(),
-                                            [](const Particle2D* a, const Particle2D* b) { return a->area < b->area; });
+  const auto [lo, hi] =
+      std::minmax_element(particles.begin(), particles.end(),
+                          [](const Particle2D* a, const Particle2D* b) { return a->area < b->area; });
   const double low = (*lo)->area;
   // All particles of one area still need ten increasing edges; they then fill the first bin.
   const double width = std::max((*hi)->area - low, 1.0) / 10.0;
   for (int i = 0; i <= 10; ++i) h.edges[std::size_t(i)] = low + i * width;
   h.edges[10] = std::max((*hi)->area, h.edges[10]);
   for (const Particle2D* p : particles) ++h.counts[std::size_t(h.binOf(p->area))];
-  for (int i = 0; i < 10; ++i) h.ratios[std::size_t(i)] = double(h.counts[std::size_t(i)]) / double(particles.size());
+  for (int i = 0; i < 10; ++i)
+    h.ratios[std::size_t(i)] = double(h.counts[std::size_t(i)]) / double(particles.size());
   return h;
 }
 
@@ -47,5 +49,5 @@ std::vector<SizePair> buildSizePairs(const std::vector<const Particle2D*>& parti
   return pairs;
 }
 
-} // namespace detail
-} // namespace solidtex
+}  // namespace detail
+}  // namespace solidtex

@@ -58,10 +58,11 @@ void drawId(cv::Mat& canvas, const Particle2D& p, int scale) {
   const cv::Point centre = labelAnchor(p) * scale + cv::Point(scale / 2, scale / 2);
   const cv::Point origin = centre + cv::Point(-size.width / 2, size.height / 2);
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, fontScale, kShadow, 3, cv::LINE_AA);
-  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, fontScale, p.border ? kBorder : kText, 1, cv::LINE_AA);
+  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, fontScale, p.border ? kBorder : kText, 1,
+              cv::LINE_AA);
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat drawLabels(const cv::Mat& photoSrgb, const ExemplarStats& stats) {
   CV_Assert(photoSrgb.type() == CV_32FC3);
@@ -74,4 +75,4 @@ cv::Mat drawLabels(const cv::Mat& photoSrgb, const ExemplarStats& stats) {
   return canvas;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -12,4 +12,4 @@ namespace solidtex {
 /// RGB, ready for writeImage.
 cv::Mat drawLabels(const cv::Mat& photoSrgb, const ExemplarStats& stats);
 
-} // namespace solidtex
+}  // namespace solidtex

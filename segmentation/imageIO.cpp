@@ -54,7 +54,8 @@ void checkSize(const std::string& path, const OIIO::ImageSpec& spec) {
 
 bool isLinearEncoded(const OIIO::ImageSpec& spec) {
   std::string space = spec.get_string_attribute("oiio:ColorSpace");
-  std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(space.begin(), space.end(), space.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   return space == "linear" || space == "scene_linear" || space == "lin_srgb" || space == "lin_rec709";
 }
 
@@ -77,17 +78,15 @@ cv::Mat toRgb8(const std::string& path, const cv::Mat& image) {
   if (image.type() == CV_8UC3 || image.type() == CV_8UC1) return image;
   if (image.type() == CV_32FC3 || image.type() == CV_32FC1) {
     cv::Mat bytes;
-    image.convertTo(bytes, image.type() == CV_32FC3 ? CV_8UC3 : CV_8UC1, 255.0); // saturates and rounds
+    image.convertTo(bytes, image.type() == CV_32FC3 ? CV_8UC3 : CV_8UC1, 255.0);  // saturates and rounds
     return bytes;
   }
   fail(path, "writeImage needs CV_32FC3, CV_8UC3, CV_32FC1 or CV_8UC1 pixels");
 }
 
-std::string temporaryName(const std::string& path) {
-  return path + ".tmp" + std::to_string(::getpid());
-}
+std::string temporaryName(const std::string& path) { return path + ".tmp" + std::to_string(::getpid()); }
 
-} // namespace
+}  // namespace
 
 cv::Mat loadPhoto(const std::string& path) {
   auto in = openImage(path);
@@ -95,7 +94,8 @@ cv::Mat loadPhoto(const std::string& path) {
   checkSize(path, spec);
   std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
   const bool ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
-  if (!ok) fail(path, "cannot decode the image, it may be truncated or corrupt (" + oneLine(in->geterror()) + ")");
+  if (!ok)
+    fail(path, "cannot decode the image, it may be truncated or corrupt (" + oneLine(in->geterror()) + ")");
   in->close();
   cv::Mat rgb = toRgb(pixels, spec.width, spec.height, spec.nchannels);
   cv::patchNaNs(rgb, 0.0);
@@ -127,4 +127,4 @@ void writeImage(const std::string& path, const cv::Mat& srgb) {
   }
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -22,4 +22,4 @@ cv::Mat loadPhoto(const std::string& path);
 /// partial file is left. Throws InputError when the file cannot be written.
 void writeImage(const std::string& path, const cv::Mat& srgb);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -15,7 +15,8 @@ int crossings(const cv::Mat& mask, int dx, int dy) {
   for (int y = 0; y < mask.rows; ++y)
     for (int x = 0; x < mask.cols; ++x) {
       const int px = x - dx, py = y - dy;
-      const bool before = px >= 0 && py >= 0 && px < mask.cols && py < mask.rows && mask.at<std::uint8_t>(py, px);
+      const bool before =
+          px >= 0 && py >= 0 && px < mask.cols && py < mask.rows && mask.at<std::uint8_t>(py, px);
       count += before != (mask.at<std::uint8_t>(y, x) != 0);
     }
   return count;
@@ -29,7 +30,7 @@ double croftonPerimeter(const cv::Mat& framedMask) {
   return std::numbers::pi / 8 * (axis + diagonal / std::numbers::sqrt2);
 }
 
-} // namespace
+}  // namespace
 
 RegionShape measureRegion(const std::vector<cv::Point>& pixels) {
   RegionShape shape;
@@ -59,4 +60,4 @@ RegionShape measureRegion(const std::vector<cv::Point>& pixels) {
   return shape;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

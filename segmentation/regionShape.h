@@ -12,7 +12,7 @@ namespace solidtex {
 struct RegionShape {
   double area = 0;       ///< pixels
   double perimeter = 0;  ///< Crofton estimate over four directions: unbiased on digital discs and ellipses
-  double solidity = 1;   ///< area / convex hull area of the outer contour through the boundary pixels' centres
+  double solidity = 1;  ///< area / convex hull area of the outer contour through the boundary pixels' centres
   double roundness = 1;  ///< 4 pi area / perimeter^2: 1 for a disc, lower for elongated or ragged regions
   cv::Point2d centroid;  ///< mean pixel position
 };
@@ -29,4 +29,4 @@ struct ShapeColumns {
   }
 };
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -11,4 +11,4 @@ namespace solidtex {
 /// ratios} and `size_pairs` [{width, height, count}].
 nlohmann::json toJson(const ExemplarStats& stats);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,7 +10,8 @@ namespace solidtex {
 namespace {
 
 cv::Size resampledSize(const cv::Size& size, double factor) {
-  return {std::max(1, int(std::lround(size.width * factor))), std::max(1, int(std::lround(size.height * factor)))};
+  return {std::max(1, int(std::lround(size.width * factor))),
+          std::max(1, int(std::lround(size.height * factor)))};
 }
 
 // Along one axis, the weight of source sample `first + s` in output sample `outFirst + o` (row o,
@@ -23,7 +24,8 @@ cv::Mat axisWeights(int first, int count, int outFirst, int outCount, double fac
     if (factor < 1) {
       const double lo = out / factor, hi = (out + 1) / factor;
       for (int s = std::max(0, int(std::floor(lo)) - first); s < count && first + s < hi; ++s)
-        weights.at<float>(o, s) = float((std::min(hi, first + s + 1.0) - std::max(lo, double(first + s))) * factor);
+        weights.at<float>(o, s) =
+            float((std::min(hi, first + s + 1.0) - std::max(lo, double(first + s))) * factor);
     } else {
       const double x = (out + 0.5) / factor - 0.5;
       const int s0 = int(std::floor(x));
@@ -45,7 +47,7 @@ cv::Mat resampleOnGrid(const cv::Mat& mask, cv::Point origin, const cv::Rect& ta
   return coverage >= 0.5f;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat resampleMask(const cv::Mat& mask, double factor) {
   return resampleOnGrid(mask, {0, 0}, cv::Rect({0, 0}, resampledSize(mask.size(), factor)), factor);
@@ -63,7 +65,8 @@ cv::Mat resampleLabels(const cv::Mat& labels, double factor) {
   for (const auto& [id, box] : boxes) {
     // The output pixels the region's box reaches, and a pixel more on each side for its edge.
     const cv::Point lo(int(std::floor(box.x * factor)) - 1, int(std::floor(box.y * factor)) - 1);
-    const cv::Point hi(int(std::ceil((box.x + box.width) * factor)) + 1, int(std::ceil((box.y + box.height) * factor)) + 1);
+    const cv::Point hi(int(std::ceil((box.x + box.width) * factor)) + 1,
+                       int(std::ceil((box.y + box.height) * factor)) + 1);
     const cv::Rect target = cv::Rect(lo, hi) & whole;
     if (target.empty()) continue;
     const cv::Mat mask = resampleOnGrid(labels(box) == id, box.tl(), target, factor);
@@ -72,4 +75,4 @@ cv::Mat resampleLabels(const cv::Mat& labels, double factor) {
   return out;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -16,4 +16,4 @@ cv::Mat resampleMask(const cv::Mat& mask, double factor);
 /// later label keeps it.
 cv::Mat resampleLabels(const cv::Mat& labels, double factor);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -44,7 +44,7 @@ cv::Mat convertEach(const cv::Mat& src, const Curve& convert) {
 
 float labCurve(float t) { return t > 0.008856f ? std::cbrt(t) : 7.787f * t + 16.0f / 116.0f; }
 
-} // namespace
+}  // namespace
 
 cv::Mat srgbToLinear(const cv::Mat& srgb) {
   static const Curve curve(solidtex::srgbToLinear);
@@ -75,5 +75,5 @@ cv::Mat linearToLab(const cv::Mat& linear) {
   return lab;
 }
 
-} // namespace detail
-} // namespace solidtex
+}  // namespace detail
+}  // namespace solidtex

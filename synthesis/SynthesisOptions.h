@@ -43,22 +43,23 @@ struct SliceMeasureOptions {
 /// Options of synthesizeSolid; defaults follow the paper and the `solidtex synthesize` command.
 struct SynthesisOptions {
   Method method = Method::ChenWang;
-  int size = 64;                           ///< output is size^3 voxels; size / 2^(levels-1) must be whole
-  int levels = 3;                          ///< multi-resolution levels, coarsest first
-  std::vector<int> neighborhoods{8, 6, 4}; ///< neighbourhood side per level, coarsest first (one value: all levels)
-  int k = 5;                               ///< k-coherence similarity set size
-  int iterations = 5;                      ///< search + optimisation iterations per level
-  int pcaDims = 20;                        ///< PCA dimensions of neighbourhood vectors
-  std::optional<cv::Mat> control;          ///< greyscale map the exemplar's size: theta(p), phi(p) (brighter = more)
+  int size = 64;   ///< output is size^3 voxels; size / 2^(levels-1) must be whole
+  int levels = 3;  ///< multi-resolution levels, coarsest first
+  std::vector<int> neighborhoods{
+      8, 6, 4};                    ///< neighbourhood side per level, coarsest first (one value: all levels)
+  int k = 5;                       ///< k-coherence similarity set size
+  int iterations = 5;              ///< search + optimisation iterations per level
+  int pcaDims = 20;                ///< PCA dimensions of neighbourhood vectors
+  std::optional<cv::Mat> control;  ///< greyscale map the exemplar's size: theta(p), phi(p) (brighter = more)
   std::uint64_t seed = 1;
-  int threads = 0;                         ///< worker threads; 0 = all cores. Output does not depend on it.
-  std::string exemplarName;                ///< stored in the volume's metadata
+  int threads = 0;           ///< worker threads; 0 = all cores. Output does not depend on it.
+  std::string exemplarName;  ///< stored in the volume's metadata
   std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
 
   // Finer controls (rarely changed).
-  int sparseStep = 2;         ///< slice neighbourhoods are matched on every step-th voxel in-plane
-  int coherenceRadius = 1;    ///< k-coherence candidates come from slice neighbours within this radius
-  int minSeparation = 2;      ///< similarity sets skip neighbourhoods within this many pixels
+  int sparseStep = 2;       ///< slice neighbourhoods are matched on every step-th voxel in-plane
+  int coherenceRadius = 1;  ///< k-coherence candidates come from slice neighbours within this radius
+  int minSeparation = 2;    ///< similarity sets skip neighbourhoods within this many pixels
   /// A level is searched exhaustively when it has fewer exemplar neighbourhoods than this and
   /// centres x neighbourhoods (candidate distances per iteration) is at most exhaustiveBudget;
   /// otherwise by k-coherence. Exhaustive search matters at the coarsest level, where a random
@@ -73,12 +74,12 @@ struct SynthesisOptions {
   double indexReferenceCount = 128;  ///< the same for eq. 6 (slice neighbourhoods per exemplar neighbourhood)
   ProposalChoice choice = ProposalChoice::ColorMode;
   double modeBandwidth = 0.01;  ///< ColorMode kernel: exp(-||a - b||^2 / bandwidth), sRGB units
-  int histogramBins = 16;     ///< per channel, Kopf's colour histograms (eq. 3)
+  int histogramBins = 16;       ///< per channel, Kopf's colour histograms (eq. 3)
   /// chen-wang re-weights with eq. 3 (colour histograms) besides eq. 4: without it a minority
   /// colour class erodes (two-colour discs: 0.10 instead of 0.30), see DiscreteHistograms.
   bool colorHistogramMatching = true;
-  bool measure = true;        ///< measure slice energies and histogram statistics (SynthesisStatistics::quality)
+  bool measure = true;  ///< measure slice energies and histogram statistics (SynthesisStatistics::quality)
   SliceMeasureOptions measureOptions;
 };
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,15 +10,15 @@
 #include "common/secondsSince.h"
 #include "common/srgb.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
-#include "synthesis/detail/discreteSolve.h"
 #include "synthesis/detail/ExemplarPyramid.h"
-#include "synthesis/detail/histograms.h"
 #include "synthesis/detail/KdTree.h"
-#include "synthesis/detail/weightedAverageSolve.h"
 #include "synthesis/detail/SimilaritySets.h"
 #include "synthesis/detail/SliceMatches.h"
+#include "synthesis/detail/discreteSolve.h"
+#include "synthesis/detail/histograms.h"
 #include "synthesis/detail/solidMeasures.h"
 #include "synthesis/detail/upsample.h"
+#include "synthesis/detail/weightedAverageSolve.h"
 
 namespace solidtex {
 
@@ -26,9 +26,12 @@ using namespace synthesis;
 
 std::string searchName(NeighborhoodSearch search) {
   switch (search) {
-    case NeighborhoodSearch::Exhaustive: return "exhaustive";
-    case NeighborhoodSearch::KCoherence: return "k-coherence";
-    case NeighborhoodSearch::KdTree: return "kd-tree";
+    case NeighborhoodSearch::Exhaustive:
+      return "exhaustive";
+    case NeighborhoodSearch::KCoherence:
+      return "k-coherence";
+    case NeighborhoodSearch::KdTree:
+      return "kd-tree";
   }
   return "";
 }
@@ -50,41 +53,51 @@ std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_st
 /// Neighbourhood side per level (one value broadcasts); validates everything that does not need the image.
 std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
   if (exemplar.empty()) throw InputError("exemplar image is empty");
-  if (o.levels < 1 || o.levels > 8) throw InputError("--levels " + std::to_string(o.levels) + " is out of range (1 to 8)");
-  if (o.size < 2 || o.size > 1024) throw InputError("--size " + std::to_string(o.size) + " is out of range (2 to 1024)");
+  if (o.levels < 1 || o.levels > 8)
+    throw InputError("--levels " + std::to_string(o.levels) + " is out of range (1 to 8)");
+  if (o.size < 2 || o.size > 1024)
+    throw InputError("--size " + std::to_string(o.size) + " is out of range (2 to 1024)");
   if (o.k < 1 || o.k > 64) throw InputError("--k " + std::to_string(o.k) + " is out of range (1 to 64)");
-  if (o.iterations < 1 || o.iterations > 100) throw InputError("--iterations " + std::to_string(o.iterations) + " is out of range (1 to 100)");
-  if (o.pcaDims < 1 || o.pcaDims > 512) throw InputError("--pca-dims " + std::to_string(o.pcaDims) + " is out of range (1 to 512)");
+  if (o.iterations < 1 || o.iterations > 100)
+    throw InputError("--iterations " + std::to_string(o.iterations) + " is out of range (1 to 100)");
+  if (o.pcaDims < 1 || o.pcaDims > 512)
+    throw InputError("--pca-dims " + std::to_string(o.pcaDims) + " is out of range (1 to 512)");
   if (o.threads < 0) throw InputError("--threads must not be negative");
-  if (o.sparseStep < 1 || o.coherenceRadius < 0 || o.histogramBins < 1) throw InputError("invalid synthesis tuning options");
+  if (o.sparseStep < 1 || o.coherenceRadius < 0 || o.histogramBins < 1)
+    throw InputError("invalid synthesis tuning options");
   std::vector<int> n = o.neighborhoods;
   if (n.size() == 1) n.assign(o.levels, n[0]);
   if (int(n.size()) != o.levels)
-    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) + " sizes but --levels is " + std::to_string(o.levels));
+    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) +
+                     " sizes but --levels is " + std::to_string(o.levels));
   for (int s : n)
-    if (s < 2 || s > 32) throw InputError("neighbourhood size " + std::to_string(s) + " is out of range (2 to 32)");
+    if (s < 2 || s > 32)
+      throw InputError("neighbourhood size " + std::to_string(s) + " is out of range (2 to 32)");
   const int factor = 1 << (o.levels - 1);
   if (o.size % factor != 0)
-    throw InputError("--size " + std::to_string(o.size) + " cannot be reached by " + std::to_string(o.levels) + " levels (must be a multiple of " +
-                     std::to_string(factor) + ")");
+    throw InputError("--size " + std::to_string(o.size) + " cannot be reached by " +
+                     std::to_string(o.levels) + " levels (must be a multiple of " + std::to_string(factor) +
+                     ")");
   for (int l = 0; l < o.levels; ++l) {
     const int N = o.size >> (o.levels - 1 - l);
     if (N < n[l] || N % o.sparseStep != 0)
-      throw InputError("--size " + std::to_string(o.size) + " is too small for " + std::to_string(o.levels) + " levels: level " + std::to_string(l + 1) +
-                       " would be " + std::to_string(N) + "^3 voxels, less than its " + std::to_string(n[l]) + "x" + std::to_string(n[l]) +
+      throw InputError("--size " + std::to_string(o.size) + " is too small for " + std::to_string(o.levels) +
+                       " levels: level " + std::to_string(l + 1) + " would be " + std::to_string(N) +
+                       "^3 voxels, less than its " + std::to_string(n[l]) + "x" + std::to_string(n[l]) +
                        " neighbourhood");
     int w = exemplar.cols, h = exemplar.rows;
     for (int k = l; k < o.levels - 1; ++k) w /= 2, h /= 2;
     if (w < n[l] || h < n[l])
-      throw InputError("exemplar " + sizeText(exemplar.cols, exemplar.rows) + " is too small for the " + std::to_string(n[l]) + "x" +
-                       std::to_string(n[l]) + " neighbourhood at level " + std::to_string(l + 1) + " of " + std::to_string(o.levels) + " (" +
-                       sizeText(w, h) + " there)");
+      throw InputError("exemplar " + sizeText(exemplar.cols, exemplar.rows) + " is too small for the " +
+                       std::to_string(n[l]) + "x" + std::to_string(n[l]) + " neighbourhood at level " +
+                       std::to_string(l + 1) + " of " + std::to_string(o.levels) + " (" + sizeText(w, h) +
+                       " there)");
   }
   if (o.control) {
     if (o.control->empty()) throw InputError("control map is empty");
     if (o.control->cols != exemplar.cols || o.control->rows != exemplar.rows)
-      throw InputError("control map is " + sizeText(o.control->cols, o.control->rows) + " but the exemplar is " +
-                       sizeText(exemplar.cols, exemplar.rows));
+      throw InputError("control map is " + sizeText(o.control->cols, o.control->rows) +
+                       " but the exemplar is " + sizeText(exemplar.cols, exemplar.rows));
   }
   return n;
 }
@@ -93,10 +106,10 @@ std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
 std::vector<float> controlAtCentres(const ExemplarNeighborhoods& en, const std::vector<float>& control) {
   if (control.empty()) return {};
   std::vector<float> out(en.count());
-  for (int m = 0; m < en.count(); ++m) out[m] = control[std::size_t(en.centreY(m)) * en.exemplarWidth + en.centreX(m)];
+  for (int m = 0; m < en.count(); ++m)
+    out[m] = control[std::size_t(en.centreY(m)) * en.exemplarWidth + en.centreX(m)];
   return out;
 }
-
 
 /// The state carried from one level to the next.
 struct PyramidState {
@@ -105,9 +118,10 @@ struct PyramidState {
 };
 
 /// Chen-wang's discrete solve of one iteration, with its histograms.
-void discreteStep(WorkVolume& volume, const RgbImage& ex, const ExemplarNeighborhoods& en, const SliceMatches& matches,
-                  const std::vector<double>& theta, std::vector<std::int64_t>& positionHistogram,
-                  const ChannelHistograms& exemplarHistogram, ChannelHistograms& volumeHistogram, const SynthesisOptions& o) {
+void discreteStep(WorkVolume& volume, const RgbImage& ex, const ExemplarNeighborhoods& en,
+                  const SliceMatches& matches, const std::vector<double>& theta,
+                  std::vector<std::int64_t>& positionHistogram, const ChannelHistograms& exemplarHistogram,
+                  ChannelHistograms& volumeHistogram, const SynthesisOptions& o) {
   DiscreteSolveSettings solve;
   solve.irlsExponent = o.irlsExponent;
   solve.choice = o.choice;
@@ -123,8 +137,8 @@ void discreteStep(WorkVolume& volume, const RgbImage& ex, const ExemplarNeighbor
 }
 
 /// Level l: its start volume (random or upsampled from state), then search and solve iterations.
-LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neighborhood, const SynthesisOptions& o,
-                                PyramidState& state) {
+LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neighborhood,
+                                const SynthesisOptions& o, PyramidState& state) {
   const auto levelStart = Clock::now();
   const bool chenWang = o.method == Method::ChenWang;
   const RgbImage& ex = pyramid.levels[l];
@@ -132,7 +146,8 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   const NeighborhoodShape shape{neighborhood};
   const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
   const SliceCentreGrid centres{N, o.sparseStep};
-  const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow && double(centres.count()) * en.count() <= o.exhaustiveBudget;
+  const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow &&
+                          double(centres.count()) * en.count() <= o.exhaustiveBudget;
   SimilaritySets sets;
   std::unique_ptr<KdTree> tree;
   if (chenWang && !exhaustive) sets = buildSimilaritySets(en, o.k, o.minSeparation);
@@ -146,20 +161,28 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   stats.exemplarNeighborhoods = en.count();
   stats.pcaDims = en.reducedDims();
   stats.pcaKeptVariance = en.pca.keptVariance();
-  stats.search = exhaustive ? NeighborhoodSearch::Exhaustive : chenWang ? NeighborhoodSearch::KCoherence : NeighborhoodSearch::KdTree;
+  stats.search = exhaustive ? NeighborhoodSearch::Exhaustive
+                 : chenWang ? NeighborhoodSearch::KCoherence
+                            : NeighborhoodSearch::KdTree;
   stats.analysisSeconds = secondsSince(levelStart);
 
   WorkVolume& volume = state.volume;
-  if (l == 0) volume = randomVolume(N, ex, deriveSeed(o.seed, 0));
-  else if (chenWang) volume = upsampleSources(volume, pyramid.levels[l - 1].width, ex);
-  else volume = upsampleColors(volume);
+  if (l == 0)
+    volume = randomVolume(N, ex, deriveSeed(o.seed, 0));
+  else if (chenWang)
+    volume = upsampleSources(volume, pyramid.levels[l - 1].width, ex);
+  else
+    volume = upsampleColors(volume);
 
   SliceMatches matches(centres);
-  const std::vector<double> theta = expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
-  const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()), controlAtCentres(en, pyramid.control[l]));
+  const std::vector<double> theta =
+      expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
+  const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()),
+                                                 controlAtCentres(en, pyramid.control[l]));
   std::vector<std::int64_t> positionHistogram;
   if (chenWang) positionHistogram = positionHistogramOf(volume.source, ex.pixelCount());
-  const ChannelHistograms exemplarHistogram = channelHistograms(ex.data.data(), std::size_t(ex.pixelCount()), o.histogramBins);
+  const ChannelHistograms exemplarHistogram =
+      channelHistograms(ex.data.data(), std::size_t(ex.pixelCount()), o.histogramBins);
   ChannelHistograms volumeHistogram = channelHistograms(volume.rgb.data(), volume.count(), o.histogramBins);
   state.indexHistogram.assign(en.count(), 0);
 
@@ -177,8 +200,10 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
     step.energy = searchPhase(volume, en, search, matches, state.indexHistogram);
     step.searchSeconds = secondsSince(t0);
     const auto t1 = Clock::now();
-    if (chenWang) discreteStep(volume, ex, en, matches, theta, positionHistogram, exemplarHistogram, volumeHistogram, o);
-    else weightedAverageSolve(volume, ex, en, matches, exemplarHistogram, volumeHistogram, {o.irlsExponent});
+    if (chenWang)
+      discreteStep(volume, ex, en, matches, theta, positionHistogram, exemplarHistogram, volumeHistogram, o);
+    else
+      weightedAverageSolve(volume, ex, en, matches, exemplarHistogram, volumeHistogram, {o.irlsExponent});
     step.solveSeconds = secondsSince(t1);
     if (chenWang) {
       std::int64_t used = 0;
@@ -188,8 +213,8 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
     stats.iterations.push_back(step);
     if (o.progress) {
       std::ostringstream line;
-      line << methodName(o.method) << " level " << l + 1 << "/" << o.levels << " (" << N << "^3) iteration " << it + 1 << "/"
-           << o.iterations << " energy " << step.energy;
+      line << methodName(o.method) << " level " << l + 1 << "/" << o.levels << " (" << N << "^3) iteration "
+           << it + 1 << "/" << o.iterations << " energy " << step.energy;
       o.progress(line.str());
     }
   }
@@ -207,7 +232,8 @@ SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, i
   if (o.method == Method::ChenWang) {
     out.sourcePosition.resize(volume.count());
     for (std::size_t i = 0; i < volume.count(); ++i)
-      out.sourcePosition[i] = {float(volume.source[i] % exemplarWidth), float(volume.source[i] / exemplarWidth)};
+      out.sourcePosition[i] = {float(volume.source[i] % exemplarWidth),
+                               float(volume.source[i] / exemplarWidth)};
   }
   out.metadata["method"] = methodName(o.method);
   out.metadata["seed"] = std::to_string(o.seed);
@@ -215,7 +241,8 @@ SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, i
   return out;
 }
 
-SolidQuality measureQuality(const PyramidState& state, const RgbImage& finest, const SliceMeasureOptions& options) {
+SolidQuality measureQuality(const PyramidState& state, const RgbImage& finest,
+                            const SliceMeasureOptions& options) {
   const auto start = Clock::now();
   const SliceEnergy energy = sliceEnergy(state.volume, finest, options);
   const PositionHistogramStats positions = positionHistogramStats(state.volume.source, finest.pixelCount());
@@ -230,13 +257,15 @@ SolidQuality measureQuality(const PyramidState& state, const RgbImage& finest, c
   q.positionCoverage = positions.coverage;
   q.positionFlatness = positions.flatness;
   q.positionVariation = positions.variation;
-  q.indexCoverage = state.indexHistogram.empty() ? 0.0 : double(usedIndices) / double(state.indexHistogram.size());
-  q.colorHistogramDistance = colorHistogramDistance(state.volume.rgb.data(), state.volume.count(), finest, options.histogramBins);
+  q.indexCoverage =
+      state.indexHistogram.empty() ? 0.0 : double(usedIndices) / double(state.indexHistogram.size());
+  q.colorHistogramDistance =
+      colorHistogramDistance(state.volume.rgb.data(), state.volume.count(), finest, options.histogramBins);
   q.seconds = secondsSince(start);
   return q;
 }
 
-} // namespace
+}  // namespace
 
 SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& o) {
   const auto start = Clock::now();
@@ -244,13 +273,16 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   SynthesisStatistics& stats = result.statistics;
   stats.neighborhoods = validate(exemplarSrgb, o);
   std::unique_ptr<tbb::global_control> threadLimit;
-  if (o.threads > 0) threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+  if (o.threads > 0)
+    threadLimit =
+        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
 
   const RgbImage finest = toRgbImage(exemplarSrgb);
   const std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
   const ExemplarPyramid pyramid = buildExemplarPyramid(finest, o.levels, control);
   PyramidState state;
-  for (int l = 0; l < o.levels; ++l) stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], o, state));
+  for (int l = 0; l < o.levels; ++l)
+    stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], o, state));
   result.volume = solidVolumeOf(state.volume, o, finest.width);
   stats.synthesisSeconds = secondsSince(start);
   if (o.measure) stats.quality = measureQuality(state, finest, o.measureOptions);
@@ -258,4 +290,4 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   return result;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -32,24 +32,24 @@ struct LevelStatistics {
   int neighborhood = 0;           ///< side of the square neighbourhoods
   int exemplarNeighborhoods = 0;  ///< how many the exemplar has
   int pcaDims = 0;
-  double pcaKeptVariance = 0;     ///< share of the neighbourhoods' variance the PCA keeps
+  double pcaKeptVariance = 0;  ///< share of the neighbourhoods' variance the PCA keeps
   NeighborhoodSearch search = NeighborhoodSearch::Exhaustive;
-  double analysisSeconds = 0;     ///< neighbourhoods, PCA, similarity sets or tree
+  double analysisSeconds = 0;  ///< neighbourhoods, PCA, similarity sets or tree
   std::vector<IterationStatistics> iterations;
   double seconds = 0;
 };
 
 /// How the finished solid's slices compare with the exemplar (SynthesisOptions::measure).
 struct SolidQuality {
-  double energyAxis = 0;     ///< slice energy (eq. 1, exponent kEnergyExponent) on axis slices
-  double energyOblique = 0;  ///< the same on random oblique planes
-  double energyAxisSquared = 0;     ///< exponent 2
+  double energyAxis = 0;         ///< slice energy (eq. 1, exponent kEnergyExponent) on axis slices
+  double energyOblique = 0;      ///< the same on random oblique planes
+  double energyAxisSquared = 0;  ///< exponent 2
   double energyObliqueSquared = 0;
-  int energyNeighborhood = 0;       ///< side of the compared neighbourhoods
-  double positionCoverage = 0;      ///< share of exemplar pixels some voxel copies
-  double positionFlatness = 0;      ///< normalised entropy of voxels per exemplar pixel (1 = even)
-  double positionVariation = 0;     ///< their coefficient of variation
-  double indexCoverage = 0;         ///< share of exemplar neighbourhoods matched at the finest level
+  int energyNeighborhood = 0;         ///< side of the compared neighbourhoods
+  double positionCoverage = 0;        ///< share of exemplar pixels some voxel copies
+  double positionFlatness = 0;        ///< normalised entropy of voxels per exemplar pixel (1 = even)
+  double positionVariation = 0;       ///< their coefficient of variation
+  double indexCoverage = 0;           ///< share of exemplar neighbourhoods matched at the finest level
   double colorHistogramDistance = 0;  ///< total variation between joint RGB histograms, in [0,1]
   double seconds = 0;
 };
@@ -76,4 +76,4 @@ struct SynthesisResult {
 /// a size the levels cannot reach, a control map of the wrong size, invalid counts.
 SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& options);
 
-} // namespace solidtex
+}  // namespace solidtex

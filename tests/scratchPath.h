@@ -11,4 +11,4 @@ inline std::filesystem::path scratchPath(const std::string& suite, const std::st
   return dir / name;
 }
 
-} // namespace solidtex::test
+}  // namespace solidtex::test

@@ -22,8 +22,8 @@ std::vector<double> windowFractions(const cv::Mat& labels, int side) {
   return fractions;
 }
 
-std::vector<double> nearestNeighbourDistances(const std::vector<cv::Point2d>& centres, const std::vector<bool>& counted,
-                                              cv::Size image) {
+std::vector<double> nearestNeighbourDistances(const std::vector<cv::Point2d>& centres,
+                                              const std::vector<bool>& counted, cv::Size image) {
   std::vector<double> distances;
   // A few hundred centres per image: the quadratic scan is cheaper than building an index.
   for (std::size_t i = 0; i < centres.size(); ++i) {
@@ -46,4 +46,4 @@ double standardDeviation(const std::vector<double>& values) {
   return std::sqrt(sum / double(values.size()));
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -15,10 +15,10 @@ std::vector<double> windowFractions(const cv::Mat& labels, int side);
 
 /// For each counted centre, the distance to its nearest other centre, kept only when that is no
 /// farther than the image's edge (the border method: a nearer neighbour cannot hide beyond the edge).
-std::vector<double> nearestNeighbourDistances(const std::vector<cv::Point2d>& centres, const std::vector<bool>& counted,
-                                              cv::Size image);
+std::vector<double> nearestNeighbourDistances(const std::vector<cv::Point2d>& centres,
+                                              const std::vector<bool>& counted, cv::Size image);
 
 /// Population standard deviation; 0 for fewer than two values.
 double standardDeviation(const std::vector<double>& values);
 
-} // namespace solidtex
+}  // namespace solidtex

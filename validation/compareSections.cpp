@@ -28,9 +28,10 @@ SectionSummary summarize(const SectionStatistics& s, const ShapeColumns& columns
   return out;
 }
 
-} // namespace
+}  // namespace
 
-SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid, double diameter) {
+SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid,
+                                  double diameter) {
   const ShapeColumns r = columnsOf(reference.shapes), s = columnsOf(solid.shapes);
   SectionComparison c;
   c.reference = summarize(reference, r, diameter);
@@ -40,7 +41,8 @@ SectionComparison compareSections(const SectionStatistics& reference, const Sect
   c.shapeKsCritical = ksCritical95(r.solidity.size(), s.solidity.size());
   c.windowSpreadRatio = c.reference.windowSpread > 0 ? c.solid.windowSpread / c.reference.windowSpread : 0;
   c.neighbourKs = ksStatistic(reference.neighbourDistances, solid.neighbourDistances);
-  c.neighbourRatio = c.reference.neighbourDistance > 0 ? c.solid.neighbourDistance / c.reference.neighbourDistance : 0;
+  c.neighbourRatio =
+      c.reference.neighbourDistance > 0 ? c.solid.neighbourDistance / c.reference.neighbourDistance : 0;
   c.referenceSolidity = r.solidity;
   c.solidSolidity = s.solidity;
   return c;
@@ -62,4 +64,4 @@ double meanParticleDiameter(const ExemplarStats& stats) {
   return counted.empty() ? 0 : std::sqrt(4 / std::numbers::pi * sum / double(counted.size()));
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -14,12 +14,12 @@ namespace solidtex {
 
 /// Means of one side's shape and arrangement measures.
 struct SectionSummary {
-  std::size_t shapes = 0;            ///< regions measured for shape
+  std::size_t shapes = 0;  ///< regions measured for shape
   double solidity = 0, roundness = 0;
   std::size_t windows = 0;
-  double windowSpread = 0;           ///< standard deviation of the windows' area fractions
+  double windowSpread = 0;  ///< standard deviation of the windows' area fractions
   std::size_t neighbours = 0;
-  double neighbourDistance = 0;      ///< mean centroid to nearest centroid, in particle diameters
+  double neighbourDistance = 0;  ///< mean centroid to nearest centroid, in particle diameters
 };
 
 /// Shape (solidity, roundness) and arrangement (window spread, nearest neighbours) of a solid's
@@ -27,16 +27,18 @@ struct SectionSummary {
 struct SectionComparison {
   SectionSummary reference, solid;
   double solidityKs = 1, roundnessKs = 1;
-  double shapeKsCritical = 1;        ///< the KS two samples of these sizes from one distribution exceed 1 time in 20
-  double windowSpreadRatio = 0;      ///< solid / reference: above 1 is more clustered
+  double shapeKsCritical =
+      1;  ///< the KS two samples of these sizes from one distribution exceed 1 time in 20
+  double windowSpreadRatio = 0;  ///< solid / reference: above 1 is more clustered
   double neighbourKs = 1;
-  double neighbourRatio = 0;         ///< solid / reference mean nearest-neighbour distance
+  double neighbourRatio = 0;  ///< solid / reference mean nearest-neighbour distance
   std::vector<double> referenceSolidity, solidSolidity;  ///< for plots
 };
 
 /// Compares two sets of section measures taken at the same resolution; `diameter` (samples) is the
 /// unit of the nearest-neighbour distances.
-SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid, double diameter);
+SectionComparison compareSections(const SectionStatistics& reference, const SectionStatistics& solid,
+                                  double diameter);
 
 /// The photo's particles as a label image (CV_32S, 1..P) resampled by `voxelsPerPixel` to a solid's
 /// voxels (resampleLabels), so their shapes are measured at the resolution the solid can show.
@@ -45,4 +47,4 @@ cv::Mat photoLabels(const ExemplarStats& stats, double voxelsPerPixel);
 /// Equivalent-disc diameter of the photo's mean statistical particle, in photo pixels.
 double meanParticleDiameter(const ExemplarStats& stats);
 
-} // namespace solidtex
+}  // namespace solidtex

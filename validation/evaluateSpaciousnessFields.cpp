@@ -13,7 +13,8 @@
 namespace solidtex {
 namespace {
 
-constexpr PlacerKind kKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay};
+constexpr PlacerKind kKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt,
+                                 PlacerKind::Delaunay};
 
 // Each particle's voxels, in id order: the order they were placed in.
 std::vector<std::vector<Voxel>> voxelsPerParticle(const Dims& dims, const std::vector<std::int32_t>& ids) {
@@ -38,7 +39,7 @@ double largestCandidate(const std::vector<std::pair<Voxel, float>>& candidates) 
   return largest;
 }
 
-} // namespace
+}  // namespace
 
 ErrorSummary summarizeErrors(std::vector<double> errors) {
   ErrorSummary summary;
@@ -65,7 +66,8 @@ SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::v
                                                   float radiusCap, std::uint64_t seed,
                                                   const std::function<void(const std::string&)>& progress) {
   if (dims.count() == 0 || ids.size() != dims.count())
-    throw std::invalid_argument("evaluateSpaciousnessFields: the ids must be one per voxel of a non-empty volume");
+    throw std::invalid_argument(
+        "evaluateSpaciousnessFields: the ids must be one per voxel of a non-empty volume");
   const auto tell = [&](const std::string& step) {
     if (progress) progress(step);
   };
@@ -92,7 +94,8 @@ SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::v
   const double largest = *std::max_element(exact.begin(), exact.end());
   evaluation.largestExactEmptyBall = largest;
   std::vector<BestFitCheck> exactFits;
-  for (const double share : {0.25, 0.5, 0.75, 1.0}) exactFits.push_back({share * largest, exactBestFit(exact, share * largest)});
+  for (const double share : {0.25, 0.5, 0.75, 1.0})
+    exactFits.push_back({share * largest, exactBestFit(exact, share * largest)});
   tell("measuring the fields");
   for (std::size_t f = 0; f < built.size(); ++f) {
     SpaciousnessField& field = *built[f];
@@ -110,13 +113,14 @@ SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::v
       const double r = check.radius;
       const std::vector<Voxel> spot = field.bestFit(float(r), 1, rng);
       if (!spot.empty()) check.exactAtSpot = double(exact[dims.index(spot[0])]);
-      check.agrees = check.exactAtSpot ? *check.exactAtSpot >= r - field.slack() - 1e-6 &&
-                                             (!check.exactBestFit || *check.exactAtSpot - *check.exactBestFit <= 1.0)
-                                       : !check.exactBestFit;
+      check.agrees = check.exactAtSpot
+                         ? *check.exactAtSpot >= r - field.slack() - 1e-6 &&
+                               (!check.exactBestFit || *check.exactAtSpot - *check.exactBestFit <= 1.0)
+                         : !check.exactBestFit;
       result.bestFits.push_back(check);
     }
   }
   return evaluation;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

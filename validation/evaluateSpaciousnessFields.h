@@ -31,15 +31,16 @@ struct BestFitCheck {
 
 struct FieldEvaluation {
   PlacerKind kind = PlacerKind::Edt;
-  double seconds = 0;          ///< to build the field from the scene's particles
-  ErrorSummary freeVoxels;     ///< at every voxel no particle covers
+  double seconds = 0;       ///< to build the field from the scene's particles
+  ErrorSummary freeVoxels;  ///< at every voxel no particle covers
   /// At the Delaunay field's circumcentre candidates; Delaunay's own are the values its best fit
   /// ranks by, the others' their at().
   ErrorSummary circumcentres;
   /// The errors that show what the field offers: at the free voxels, for Delaunay (whose at() is a
   /// nearest-vertex bound) at its circumcentres.
   std::vector<double> errors;
-  std::vector<BestFitCheck> bestFits;  ///< at a quarter, half, three quarters and all of the largest empty ball
+  std::vector<BestFitCheck>
+      bestFits;  ///< at a quarter, half, three quarters and all of the largest empty ball
 };
 
 struct SpaciousnessEvaluation {
@@ -56,8 +57,8 @@ ErrorSummary summarizeErrors(std::vector<double> errors);
 /// Builds every field from the particles of `ids` (0 free, 1..P in the order they were placed; one
 /// per voxel of a non-empty `dims`) and measures it against exactSpaciousness. `progress` is told
 /// each step's name; it may be empty.
-SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::vector<std::int32_t>& ids,
-                                                  float radiusCap, std::uint64_t seed,
-                                                  const std::function<void(const std::string&)>& progress = {});
+SpaciousnessEvaluation evaluateSpaciousnessFields(
+    const Dims& dims, const std::vector<std::int32_t>& ids, float radiusCap, std::uint64_t seed,
+    const std::function<void(const std::string&)>& progress = {});
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -59,7 +59,8 @@ std::vector<Particle> drawPopulation(const ParticleTruthOptions& options, Rng& r
                        " particles: raise the radii or lower the fraction or the dimensions");
     Particle p;
     double pick = uniform01(rng) * shareTotal;
-    while (p.classIndex + 1 < int(options.classes.size()) && pick >= options.classes[std::size_t(p.classIndex)].share)
+    while (p.classIndex + 1 < int(options.classes.size()) &&
+           pick >= options.classes[std::size_t(p.classIndex)].share)
       pick -= options.classes[std::size_t(p.classIndex++)].share;
     const ParticleClass& c = options.classes[std::size_t(p.classIndex)];
     // Two spreads at most: one freak size would dominate a small truth's volume distribution.
@@ -76,14 +77,15 @@ std::vector<Particle> drawPopulation(const ParticleTruthOptions& options, Rng& r
 // A particle's shape at unit semi-axes, scaled to the unit sphere's volume so that the semi-axes
 // alone set every shape's volume.
 struct UnitShape {
-  double exponent = 2;                 // ellipsoid and superellipsoid: sum |u_i / scale|^p <= 1
+  double exponent = 2;  // ellipsoid and superellipsoid: sum |u_i / scale|^p <= 1
   double scale = 1;
   std::vector<Eigen::Vector4d> faces;  // polytope: (n, h) with n.u <= h; empty for the others
   double reach = 1;                    // the largest |u| inside
 
   bool contains(const Eigen::Vector3d& u) const {
     if (!faces.empty())
-      return std::all_of(faces.begin(), faces.end(), [&](const Eigen::Vector4d& f) { return f.head<3>().dot(u) <= f[3]; });
+      return std::all_of(faces.begin(), faces.end(),
+                         [&](const Eigen::Vector4d& f) { return f.head<3>().dot(u) <= f[3]; });
     const Eigen::Vector3d v = u.cwiseAbs() / scale;
     if (exponent == 2) return v.squaredNorm() <= 1;
     return v.array().pow(exponent).sum() <= 1;
@@ -136,7 +138,8 @@ UnitShape polytope(Rng& rng) {
       const double z = 1 - (2 * i + 1) / double(count), ring = std::sqrt(1 - z * z);
       const double angle = i * std::numbers::pi * (3 - std::sqrt(5.0));
       const Eigen::Vector3d jitter(gaussian(rng), gaussian(rng), gaussian(rng));
-      vertices.push_back((Eigen::Vector3d(ring * std::cos(angle), ring * std::sin(angle), z) + 0.25 * jitter).normalized());
+      vertices.push_back(
+          (Eigen::Vector3d(ring * std::cos(angle), ring * std::sin(angle), z) + 0.25 * jitter).normalized());
     }
     UnitShape shape;
     shape.scale = std::cbrt(kUnitSphereVolume / hullFaces(vertices, shape.faces));
@@ -149,9 +152,12 @@ UnitShape polytope(Rng& rng) {
 
 UnitShape unitShapeOf(const ParticleTruthOptions& options, Rng& rng) {
   switch (options.shape) {
-    case TruthShape::Superellipsoid: return superellipsoid(options.exponent);
-    case TruthShape::Polytope: return polytope(rng);
-    case TruthShape::Ellipsoid: break;
+    case TruthShape::Superellipsoid:
+      return superellipsoid(options.exponent);
+    case TruthShape::Polytope:
+      return polytope(rng);
+    case TruthShape::Ellipsoid:
+      break;
   }
   return {};
 }
@@ -159,9 +165,12 @@ UnitShape unitShapeOf(const ParticleTruthOptions& options, Rng& rng) {
 // The furthest any shape of the options reaches, in semi-axes.
 double largestReach(const ParticleTruthOptions& options) {
   switch (options.shape) {
-    case TruthShape::Superellipsoid: return superellipsoid(options.exponent).reach;
-    case TruthShape::Polytope: return kPolytopeReach;
-    case TruthShape::Ellipsoid: break;
+    case TruthShape::Superellipsoid:
+      return superellipsoid(options.exponent).reach;
+    case TruthShape::Polytope:
+      return kPolytopeReach;
+    case TruthShape::Ellipsoid:
+      break;
   }
   return 1;
 }
@@ -208,7 +217,8 @@ std::size_t wrappedIndex(const Dims& dims, const Voxel& centre, const Voxel& off
 }
 
 bool isFree(const std::vector<std::int32_t>& ids, const Dims& dims, const Voxel& centre, const Footprint& f) {
-  return std::none_of(f.near.begin(), f.near.end(), [&](const Voxel& o) { return ids[wrappedIndex(dims, centre, o)] != 0; });
+  return std::none_of(f.near.begin(), f.near.end(),
+                      [&](const Voxel& o) { return ids[wrappedIndex(dims, centre, o)] != 0; });
 }
 
 cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& options, Rng& rng) {
@@ -220,32 +230,37 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
   for (int j = 0; j < dims.y; ++j)
     for (int i = 0; i < dims.x; ++i) {
       const std::int32_t id = truth.volume.particleId[dims.index(i, j, z)];
-      photo.at<cv::Vec3f>(j, i) = id > 0 ? options.classes[std::size_t(truth.classOf[std::size_t(id - 1)])].srgb * shade[std::size_t(id - 1)]
-                                         : options.backgroundSrgb;
+      photo.at<cv::Vec3f>(j, i) =
+          id > 0 ? options.classes[std::size_t(truth.classOf[std::size_t(id - 1)])].srgb *
+                       shade[std::size_t(id - 1)]
+                 : options.backgroundSrgb;
     }
   // A lens blurs what it sees and the sensor then adds its noise, so the noise stays sharp.
   if (options.blur > 0) cv::GaussianBlur(photo, photo, cv::Size(), options.blur, options.blur);
   for (int j = 0; j < dims.y; ++j)
     for (int i = 0; i < dims.x; ++i) {
       cv::Vec3f& c = photo.at<cv::Vec3f>(j, i);
-      for (int ch = 0; ch < 3; ++ch) c[ch] = std::clamp(float(c[ch] + options.noise * gaussian(rng)), 0.f, 1.f);
+      for (int ch = 0; ch < 3; ++ch)
+        c[ch] = std::clamp(float(c[ch] + options.noise * gaussian(rng)), 0.f, 1.f);
     }
   return photo;
 }
 
 void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) {
   if (!(c.meanRadius >= 1 && c.share > 0 && c.share <= 1 && c.radiusSpread >= 0 && c.radiusSpread <= 1))
-    throw InputError("each particle class needs a radius of at least 1 voxel, a share in (0, 1] and a spread in [0, 1]");
+    throw InputError(
+        "each particle class needs a radius of at least 1 voxel, a share in (0, 1] and a spread in [0, 1]");
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the
   // other axes by flatten^(-1/3). A periodic volume must hold the longest particle with room to
   // spare, or it would touch its own image.
-  const double longest = 2 * c.meanRadius * std::exp(2 * c.radiusSpread) * std::pow(options.elongation, 4.0 / 3.0) /
-                         std::cbrt(options.flatten) * largestReach(options);
+  const double longest = 2 * c.meanRadius * std::exp(2 * c.radiusSpread) *
+                         std::pow(options.elongation, 4.0 / 3.0) / std::cbrt(options.flatten) *
+                         largestReach(options);
   const int edge = std::min({options.dims.x, options.dims.y, options.dims.z});
   if (longest + 4 > edge)
     throw InputError("the largest " + std::string(truthShapeName(options.shape)) + "s (" +
-                     std::to_string(int(std::ceil(longest))) + " voxels across) do not fit the truth's smallest edge (" +
-                     std::to_string(edge) + ")");
+                     std::to_string(int(std::ceil(longest))) +
+                     " voxels across) do not fit the truth's smallest edge (" + std::to_string(edge) + ")");
 }
 
 void validate(const ParticleTruthOptions& options) {
@@ -253,19 +268,23 @@ void validate(const ParticleTruthOptions& options) {
   if (d.x < 16 || d.y < 16 || d.z < 16 || d.count() > (std::size_t(1) << 30))
     throw InputError("truth dimensions must be at least 16 and at most 2^30 voxels in all");
   if (!(options.noise >= 0 && options.noise <= 1)) throw InputError("truth photo noise must be in [0, 1]");
-  if (!(options.blur >= 0 && options.blur <= 16)) throw InputError("truth photo blur must be in [0, 16] pixels");
+  if (!(options.blur >= 0 && options.blur <= 16))
+    throw InputError("truth photo blur must be in [0, 16] pixels");
   if (!(options.volumeFraction > 0 && options.volumeFraction < 0.5))
     throw InputError("truth volume fraction must be in (0, 0.5)");
   if (options.classes.empty()) throw InputError("truth needs at least one class of particles");
-  if (!(options.elongation >= 1 && options.elongation <= 3)) throw InputError("truth elongation must be in [1, 3]");
+  if (!(options.elongation >= 1 && options.elongation <= 3))
+    throw InputError("truth elongation must be in [1, 3]");
   // Thinner than 1:5 and a small particle is a voxel or two thick: its shape is lost.
-  if (!(options.flatten >= 0.2 && options.flatten <= 1)) throw InputError("truth flatten must be in [0.2, 1]");
+  if (!(options.flatten >= 0.2 && options.flatten <= 1))
+    throw InputError("truth flatten must be in [0.2, 1]");
   // Below 1 the shape is no longer convex; far above 16 it is a box with voxel-sharp edges.
-  if (!(options.exponent >= 1 && options.exponent <= 16)) throw InputError("truth superellipsoid exponent must be in [1, 16]");
+  if (!(options.exponent >= 1 && options.exponent <= 16))
+    throw InputError("truth superellipsoid exponent must be in [1, 16]");
   for (const ParticleClass& c : options.classes) validateClass(c, options);
 }
 
-} // namespace
+}  // namespace
 
 TruthShape parseTruthShape(const std::string& name) {
   if (name == "ellipsoid") return TruthShape::Ellipsoid;
@@ -276,9 +295,12 @@ TruthShape parseTruthShape(const std::string& name) {
 
 const char* truthShapeName(TruthShape shape) {
   switch (shape) {
-    case TruthShape::Superellipsoid: return "superellipsoid";
-    case TruthShape::Polytope: return "polytope";
-    case TruthShape::Ellipsoid: break;
+    case TruthShape::Superellipsoid:
+      return "superellipsoid";
+    case TruthShape::Polytope:
+      return "polytope";
+    case TruthShape::Ellipsoid:
+      break;
   }
   return "ellipsoid";
 }
@@ -295,12 +317,14 @@ ParticleTruth makeParticleTruth(const ParticleTruthOptions& options) {
   for (const Particle& p : population) {
     const Footprint f = footprintOf(p, options, rng);
     for (int t = 0; t < kTriesPerParticle; ++t) {
-      const Voxel centre{int(uniformIndex(rng, std::uint64_t(dims.x))), int(uniformIndex(rng, std::uint64_t(dims.y))),
+      const Voxel centre{int(uniformIndex(rng, std::uint64_t(dims.x))),
+                         int(uniformIndex(rng, std::uint64_t(dims.y))),
                          int(uniformIndex(rng, std::uint64_t(dims.z)))};
       if (!isFree(truth.volume.particleId, dims, centre, f)) continue;
       truth.classOf.push_back(p.classIndex);
       truth.volumes.push_back(double(f.inside.size()));
-      for (const Voxel& o : f.inside) truth.volume.particleId[wrappedIndex(dims, centre, o)] = std::int32_t(truth.classOf.size());
+      for (const Voxel& o : f.inside)
+        truth.volume.particleId[wrappedIndex(dims, centre, o)] = std::int32_t(truth.classOf.size());
       occupied += f.inside.size();
       break;
     }
@@ -308,7 +332,9 @@ ParticleTruth makeParticleTruth(const ParticleTruthOptions& options) {
   truth.volumeFraction = double(occupied) / double(dims.count());
 
   std::vector<Rgb> linear(options.classes.size() + 1);
-  const auto toLinear = [](const cv::Vec3f& s) { return Rgb{srgbToLinear(s[0]), srgbToLinear(s[1]), srgbToLinear(s[2])}; };
+  const auto toLinear = [](const cv::Vec3f& s) {
+    return Rgb{srgbToLinear(s[0]), srgbToLinear(s[1]), srgbToLinear(s[2])};
+  };
   linear[0] = toLinear(options.backgroundSrgb);
   for (std::size_t c = 0; c < options.classes.size(); ++c) linear[c + 1] = toLinear(options.classes[c].srgb);
   truth.volume.color.resize(dims.count());
@@ -322,4 +348,4 @@ ParticleTruth makeParticleTruth(const ParticleTruthOptions& options) {
   return truth;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

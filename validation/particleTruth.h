@@ -31,29 +31,30 @@ struct ParticleClass {
 
 /// A solid with a known 3D truth, for checking a reconstruction against more than its photo.
 struct ParticleTruthOptions {
-  Dims dims{640, 640, 72};    ///< periodic on every axis, so no wall biases where particles sit
+  Dims dims{640, 640, 72};  ///< periodic on every axis, so no wall biases where particles sit
   double volumeFraction = 0.2;
   std::vector<ParticleClass> classes{
       {7, 0.2, 0.75, {0.92f, 0.55f, 0.16f}},   // small and orange
       {13, 0.2, 0.25, {0.25f, 0.48f, 0.88f}},  // large and blue: colour tells size
   };
   TruthShape shape = TruthShape::Ellipsoid;
-  double elongation = 1.25;   ///< stretch of the semi-axes: their logs uniform in [-ln e, ln e], centred so the product is 1
-  double flatten = 1;         ///< the smallest semi-axis over the other two shrinks by this factor, volume kept
-  double exponent = 4;        ///< superellipsoid exponent p (2 is the ellipsoid)
+  double elongation =
+      1.25;  ///< stretch of the semi-axes: their logs uniform in [-ln e, ln e], centred so the product is 1
+  double flatten = 1;   ///< the smallest semi-axis over the other two shrinks by this factor, volume kept
+  double exponent = 4;  ///< superellipsoid exponent p (2 is the ellipsoid)
   cv::Vec3f backgroundSrgb{0.16f, 0.16f, 0.17f};
-  double blur = 0;            ///< standard deviation of the photo's Gaussian blur, pixels, applied before the noise
-  double noise = 0.02;        ///< standard deviation of the photo's pixel noise (sRGB)
+  double blur = 0;      ///< standard deviation of the photo's Gaussian blur, pixels, applied before the noise
+  double noise = 0.02;  ///< standard deviation of the photo's pixel noise (sRGB)
   std::uint64_t seed = 1;
 };
 
 /// The truth and its photo.
 struct ParticleTruth {
-  SolidVolume volume;         ///< particle_id and linear colour; voxels_per_pixel 1 (the photo is a section)
-  std::vector<int> classOf;   ///< class index per particle id - 1
-  std::vector<double> volumes;///< voxels per particle id - 1 (photo pixels cubed)
+  SolidVolume volume;        ///< particle_id and linear colour; voxels_per_pixel 1 (the photo is a section)
+  std::vector<int> classOf;  ///< class index per particle id - 1
+  std::vector<double> volumes;  ///< voxels per particle id - 1 (photo pixels cubed)
   double volumeFraction = 0;
-  cv::Mat photo;              ///< CV_32FC3 sRGB, the section z = dims.z / 2
+  cv::Mat photo;  ///< CV_32FC3 sRGB, the section z = dims.z / 2
 };
 
 /// Random non-overlapping particles (random sequential addition, largest first, each drawn size
@@ -63,4 +64,4 @@ struct ParticleTruth {
 /// Particles never touch, not even diagonally, so the photo's particles are its sections.
 ParticleTruth makeParticleTruth(const ParticleTruthOptions& options);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -55,7 +55,7 @@ std::vector<double> weightedQuantiles(std::vector<std::pair<double, double>> wei
   return quantiles;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<double> particleVolumes(const Dims& dims, const std::vector<std::int32_t>& ids, bool cutByFaces) {
   std::vector<std::pair<double, double>> weighted;  // volume, weight
@@ -76,4 +76,4 @@ std::vector<double> particleVolumes(const Dims& dims, const std::vector<std::int
   return weightedQuantiles(std::move(weighted));
 }
 
-} // namespace solidtex
+}  // namespace solidtex

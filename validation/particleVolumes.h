@@ -14,4 +14,4 @@ namespace solidtex {
 /// equally weighted quantiles, one per whole particle.
 std::vector<double> particleVolumes(const Dims& dims, const std::vector<std::int32_t>& ids, bool cutByFaces);
 
-} // namespace solidtex
+}  // namespace solidtex

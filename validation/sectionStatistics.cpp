@@ -101,9 +101,11 @@ ImageMeasures measureImage(const cv::Mat& labels, bool axisAligned, const Sectio
 /// The square window of the plane through `through` with this normal that covers the plane's whole
 /// intersection with the volume: an inscribed window would cut the larger sections more often and
 /// bias the areas small.
-SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const Eigen::Vector3d& through, double step) {
+SlicePlane coveringPlane(const Dims& dims, const Eigen::Vector3d& normal, const Eigen::Vector3d& through,
+                         double step) {
   SlicePlane plane = obliquePlane(dims, normal, through);
-  const double diagonal = std::sqrt(double(dims.x) * dims.x + double(dims.y) * dims.y + double(dims.z) * dims.z);
+  const double diagonal =
+      std::sqrt(double(dims.x) * dims.x + double(dims.y) * dims.y + double(dims.z) * dims.z);
   plane.width = plane.height = int(std::ceil(diagonal / step)) + 1;
   plane.u *= step;
   plane.v *= step;
@@ -129,7 +131,8 @@ SlicePlane axisPlaneNumber(const Dims& dims, const SectionOptions& options, int 
 
 std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& options) {
   std::vector<SlicePlane> planes;
-  for (int i = 0; i < 3 * options.offsetsPerAxis; ++i) planes.push_back(axisPlaneNumber(dims, options, i, options.step));
+  for (int i = 0; i < 3 * options.offsetsPerAxis; ++i)
+    planes.push_back(axisPlaneNumber(dims, options, i, options.step));
   Rng rng(deriveSeed(options.seed, 0x5EC7));
   const Eigen::Vector3d centre((dims.x - 1) * 0.5, (dims.y - 1) * 0.5, (dims.z - 1) * 0.5);
   const double spread = 0.25 * std::min({dims.x, dims.y, dims.z});
@@ -142,9 +145,10 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
   return planes;
 }
 
-} // namespace
+}  // namespace
 
-SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids, const SectionOptions& options) {
+SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids,
+                                 const SectionOptions& options) {
   const std::vector<SlicePlane> planes = planesFor(dims, options);
   const std::size_t axisPlanes = std::size_t(3 * options.offsetsPerAxis);
   std::vector<ImageMeasures> perPlane(planes.size());
@@ -182,4 +186,4 @@ SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions&
   return measureImage(labels, true, options).stats;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -14,12 +14,12 @@ namespace solidtex {
 
 /// Which planes cut the volume and what is measured on them.
 struct SectionOptions {
-  int offsetsPerAxis = 16;      ///< evenly spaced axis-aligned planes per axis
-  int obliquePlanes = 32;       ///< random orientations through random points near the centre
-  double minArea = 0;           ///< smaller sections are specks and dropped, as the photo's noise is
-  double shapeMinArea = 20;     ///< samples; smaller sections are too coarse for a shape
-  int windowSide = 0;           ///< samples per side of the arrangement windows; 0: no arrangement measures
-  double step = 1;              ///< voxels between samples: a finer volume cut at a coarser one's resolution
+  int offsetsPerAxis = 16;   ///< evenly spaced axis-aligned planes per axis
+  int obliquePlanes = 32;    ///< random orientations through random points near the centre
+  double minArea = 0;        ///< smaller sections are specks and dropped, as the photo's noise is
+  double shapeMinArea = 20;  ///< samples; smaller sections are too coarse for a shape
+  int windowSide = 0;        ///< samples per side of the arrangement windows; 0: no arrangement measures
+  double step = 1;           ///< voxels between samples: a finer volume cut at a coarser one's resolution
   std::uint64_t seed = 1;
 };
 
@@ -40,10 +40,11 @@ struct SectionStatistics {
 /// `minArea` drops as the photo's analysis drops its noise. Sections cut by the volume's walls
 /// count in the area fraction and as neighbours but are not measured, just as the photo's border
 /// particles are left out of its histogram.
-SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids, const SectionOptions& options);
+SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids,
+                                 const SectionOptions& options);
 
 /// The same measures of one label image (CV_32S, 0 background, regions of equal positive labels),
 /// such as a photo's particles resampled to a solid's voxels: it counts as one axis plane.
 SectionStatistics measureLabelImage(const cv::Mat& labels, const SectionOptions& options);
 
-} // namespace solidtex
+}  // namespace solidtex

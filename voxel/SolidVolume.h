@@ -16,11 +16,12 @@ using Rgb = std::array<float, 3>;
 /// `particle_id` (Int32Grid) and `source_position` (Vec3SGrid) when present.
 struct SolidVolume {
   Dims dims;
-  std::vector<float> density;                 ///< dims.count(); empty: 1 on particles, or everywhere without them
-  std::vector<Rgb> color;                     ///< dims.count(), linear RGB in [0,1]
-  std::vector<std::int32_t> particleId;       ///< dims.count() or empty; 0 background, 1..P particles
-  std::vector<std::array<float, 2>> sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
-  std::map<std::string, std::string> metadata;       ///< file metadata: command line, seed, exemplar, ...
+  std::vector<float> density;            ///< dims.count(); empty: 1 on particles, or everywhere without them
+  std::vector<Rgb> color;                ///< dims.count(), linear RGB in [0,1]
+  std::vector<std::int32_t> particleId;  ///< dims.count() or empty; 0 background, 1..P particles
+  std::vector<std::array<float, 2>>
+      sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
+  std::map<std::string, std::string> metadata;  ///< file metadata: command line, seed, exemplar, ...
 };
 
-} // namespace solidtex
+}  // namespace solidtex

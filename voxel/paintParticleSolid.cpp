@@ -4,9 +4,9 @@
 #include <cmath>
 #include <utility>
 
+#include <tbb/parallel_for.h>
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
-#include <tbb/parallel_for.h>
 
 #include "common/Random.h"
 #include "common/randomDirection.h"
@@ -77,10 +77,11 @@ int wrap(double x, int n) {
   return i < 0 ? i + n : i;
 }
 
-} // namespace
+}  // namespace
 
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
-                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel, std::uint64_t seed) {
+                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
+                               std::uint64_t seed) {
   SolidVolume volume;
   volume.dims = dims;
   volume.particleId = std::move(ids);
@@ -91,7 +92,8 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
   const Projection background = randomProjection(rng, pixelsPerVoxel);
   std::vector<Projection> projections;
   projections.reserve(particles.size());
-  for (const ParticlePaint& particle : particles) projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
+  for (const ParticlePaint& particle : particles)
+    projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
   const cv::Mat backgroundResidual = fillParticleHoles(stats);
 
   tbb::parallel_for(0, dims.z, [&](int z) {
@@ -101,8 +103,9 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
         const std::int32_t id = volume.particleId[idx];
         const Eigen::Vector3d p(x, y, z);
         if (id == 0) {
-          const cv::Vec3f r = backgroundResidual.at<cv::Vec3f>(wrap(p.dot(background.v), backgroundResidual.rows),
-                                                               wrap(p.dot(background.u), backgroundResidual.cols));
+          const cv::Vec3f r =
+              backgroundResidual.at<cv::Vec3f>(wrap(p.dot(background.v), backgroundResidual.rows),
+                                               wrap(p.dot(background.u), backgroundResidual.cols));
           volume.color[idx] = clamp01(stats.backgroundColor + r);
           continue;
         }
@@ -110,9 +113,12 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
         const Particle2D& source = stats.particles[std::size_t(particle.source)];
         const Projection& proj = projections[std::size_t(id - 1)];
         // Project about the particle's centre onto the centre of its photo particle's box.
-        const Eigen::Vector3d local = p - Eigen::Vector3d(particle.centre[0], particle.centre[1], particle.centre[2]);
-        const int c = std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
-        const int r = std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
+        const Eigen::Vector3d local =
+            p - Eigen::Vector3d(particle.centre[0], particle.centre[1], particle.centre[2]);
+        const int c =
+            std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
+        const int r =
+            std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
         // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
         volume.color[idx] = clamp01(source.color + source.residual.at<cv::Vec3f>(r, c));
       }
@@ -120,4 +126,4 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
   return volume;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,9 +10,9 @@ namespace solidtex {
 
 /// A placed particle as painting needs it.
 struct ParticlePaint {
-  int source = -1;                  ///< index into ExemplarStats::particles
-  std::array<double, 3> centre{};   ///< centre of its box, in volume voxels
-  double voxelsPerPixel = 1;        ///< the scale its shape was made at
+  int source = -1;                 ///< index into ExemplarStats::particles
+  std::array<double, 3> centre{};  ///< centre of its box, in volume voxels
+  double voxelsPerPixel = 1;       ///< the scale its shape was made at
 };
 
 /// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
@@ -24,6 +24,7 @@ struct ParticlePaint {
 /// it is taken by value so that callers can move a 512^3 grid in rather than hold two copies.
 /// density is left implicit (1 on particles, as writeVdb writes it).
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
-                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel, std::uint64_t seed);
+                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
+                               std::uint64_t seed);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -53,4 +53,4 @@ cv::Mat colorSlice(const SolidVolume& volume, const SlicePlane& plane) {
   return image;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -29,13 +29,15 @@ SlicePlane obliquePlane(const Dims& dims, const Eigen::Vector3d& normal, const E
 /// Nearest-voxel samples of a dense x-fastest field on the plane, row-major; samples outside the
 /// volume get `outside`.
 template <typename T>
-std::vector<T> slice(const Dims& dims, const std::vector<T>& field, const SlicePlane& plane, const T& outside) {
+std::vector<T> slice(const Dims& dims, const std::vector<T>& field, const SlicePlane& plane,
+                     const T& outside) {
   std::vector<T> out(std::size_t(plane.width) * std::size_t(plane.height), outside);
   for (int r = 0; r < plane.height; ++r)
     for (int c = 0; c < plane.width; ++c) {
       const Eigen::Vector3d p = plane.origin + double(c) * plane.u + double(r) * plane.v;
       const int i = int(std::lround(p.x())), j = int(std::lround(p.y())), k = int(std::lround(p.z()));
-      if (dims.contains(i, j, k)) out[std::size_t(r) * std::size_t(plane.width) + std::size_t(c)] = field[dims.index(i, j, k)];
+      if (dims.contains(i, j, k))
+        out[std::size_t(r) * std::size_t(plane.width) + std::size_t(c)] = field[dims.index(i, j, k)];
     }
   return out;
 }
@@ -43,4 +45,4 @@ std::vector<T> slice(const Dims& dims, const std::vector<T>& field, const SliceP
 /// The volume's colour on the plane as an sRGB image (CV_32FC3, RGB order, [0,1]).
 cv::Mat colorSlice(const SolidVolume& volume, const SlicePlane& plane);
 
-} // namespace solidtex
+}  // namespace solidtex

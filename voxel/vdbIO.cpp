@@ -24,7 +24,8 @@ openvdb::CoordBBox boxOf(const Dims& dims) {
 
 /// Dense data in our x-fastest layout wrapped for OpenVDB without a copy.
 template <typename VdbValue, typename Value>
-openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> wrap(const Dims& dims, const std::vector<Value>& data) {
+openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> wrap(const Dims& dims,
+                                                                const std::vector<Value>& data) {
   static_assert(sizeof(VdbValue) == sizeof(Value));
   return {boxOf(dims), reinterpret_cast<VdbValue*>(const_cast<Value*>(data.data()))};
 }
@@ -68,13 +69,15 @@ void release(std::vector<T>& data) {
 openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
   openvdb::Int32Grid::Ptr ids;
-  if (!volume.particleId.empty()) ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
+  if (!volume.particleId.empty())
+    ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
   release(volume.particleId);
   openvdb::GridPtrVec grids;
   grids.push_back(densityGrid(volume, ids, xform));
   release(volume.density);
   // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
-  auto color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+  auto color =
+      sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
   release(volume.color);
   color->setVectorType(openvdb::VEC_INVARIANT);
   grids.push_back(color);
@@ -87,7 +90,8 @@ openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
     for (std::size_t i = 0; i < positions.size(); ++i)
       positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
     release(volume.sourcePosition);
-    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f), "source_position", xform));
+    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
+                                                   "source_position", xform));
   }
   return grids;
 }
@@ -119,14 +123,15 @@ void stampContentUuid(const std::filesystem::path& file) {
   }
   io.clear();
   char text[kUuidLength + 1];
-  std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32), unsigned(hash[0] >> 16) & 0xffffu,
-                unsigned(hash[0]) & 0xffffu, unsigned(hash[1] >> 48), (unsigned long long)(hash[1] & 0xffffffffffffull));
+  std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32),
+                unsigned(hash[0] >> 16) & 0xffffu, unsigned(hash[0]) & 0xffffu, unsigned(hash[1] >> 48),
+                (unsigned long long)(hash[1] & 0xffffffffffffull));
   io.seekp(kUuidOffset);
   io.write(text, std::streamsize(kUuidLength));
   if (!io.flush()) throw std::runtime_error("writeVdb: cannot stamp the UUID");
 }
 
-} // namespace
+}  // namespace
 
 void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   openvdb::initialize();
@@ -164,12 +169,12 @@ void denseFrom(const openvdb::GridBase::Ptr& base, const Dims& dims, std::vector
   auto grid = openvdb::gridPtrCast<GridT>(base);
   if (!grid) return;
   out.assign(dims.count(), Value{});
-  openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(boxOf(dims),
-      reinterpret_cast<typename GridT::ValueType*>(out.data()));
+  openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(
+      boxOf(dims), reinterpret_cast<typename GridT::ValueType*>(out.data()));
   openvdb::tools::copyToDense(*grid, dense);
 }
 
-} // namespace
+}  // namespace
 
 SolidVolume readVdb(const std::string& path) {
   openvdb::initialize();
@@ -188,18 +193,24 @@ SolidVolume readVdb(const std::string& path) {
   SolidVolume volume;
   openvdb::CoordBBox box;
   for (const auto& grid : *grids)
-    if (grid->getName() == "density" || grid->getName() == "color") box.expand(grid->evalActiveVoxelBoundingBox());
+    if (grid->getName() == "density" || grid->getName() == "color")
+      box.expand(grid->evalActiveVoxelBoundingBox());
   if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid");
-  if (box.min() != openvdb::Coord(0)) throw InputError("cannot read " + path + ": the volume does not start at voxel (0,0,0)");
+  if (box.min() != openvdb::Coord(0))
+    throw InputError("cannot read " + path + ": the volume does not start at voxel (0,0,0)");
   volume.dims = {box.max().x() + 1, box.max().y() + 1, box.max().z() + 1};
   for (const auto& grid : *grids) {
     const auto& name = grid->getName();
-    if (name == "density") denseFrom<openvdb::FloatGrid>(grid, volume.dims, volume.density);
-    else if (name == "color") denseFrom<openvdb::Vec3SGrid>(grid, volume.dims, volume.color);
-    else if (name == "particle_id") denseFrom<openvdb::Int32Grid>(grid, volume.dims, volume.particleId);
+    if (name == "density")
+      denseFrom<openvdb::FloatGrid>(grid, volume.dims, volume.density);
+    else if (name == "color")
+      denseFrom<openvdb::Vec3SGrid>(grid, volume.dims, volume.color);
+    else if (name == "particle_id")
+      denseFrom<openvdb::Int32Grid>(grid, volume.dims, volume.particleId);
   }
-  for (auto it = meta->beginMeta(); it != meta->endMeta(); ++it) volume.metadata[it->first] = it->second->str();
+  for (auto it = meta->beginMeta(); it != meta->endMeta(); ++it)
+    volume.metadata[it->first] = it->second->str();
   return volume;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

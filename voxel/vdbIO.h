@@ -15,4 +15,4 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize = 1.
 /// dense form over the active bounding box of its grids, starting at index 0.
 SolidVolume readVdb(const std::string& path);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -18,7 +18,8 @@ constexpr int kPreviewHeight = 320;
 cv::Mat toHeight(const cv::Mat& image, int height) {
   cv::Mat out;
   const int width = std::max(1, int(std::lround(double(image.cols) * height / image.rows)));
-  cv::resize(image, out, cv::Size(width, height), 0, 0, image.rows < height ? cv::INTER_NEAREST : cv::INTER_AREA);
+  cv::resize(image, out, cv::Size(width, height), 0, 0,
+             image.rows < height ? cv::INTER_NEAREST : cv::INTER_AREA);
   return out;
 }
 
@@ -35,9 +36,10 @@ cv::Mat sideBySide(const std::vector<cv::Mat>& images) {
   return canvas;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& photoSrgb, const SolidVolume& volume) {
+std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& photoSrgb,
+                                       const SolidVolume& volume) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -65,4 +67,4 @@ std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& ph
   return written;
 }
 
-} // namespace solidtex
+}  // namespace solidtex

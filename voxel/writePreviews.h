@@ -12,6 +12,7 @@ namespace solidtex {
 /// (`slice_x.png`, `slice_y.png`, `slice_z.png`), one oblique slice through the centre with normal
 /// (1,2,3) (`slice_oblique.png`), and `preview.png` with the photo and the four slices side by side.
 /// `photoSrgb` is CV_32FC3 sRGB. Returns the paths written.
-std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& photoSrgb, const SolidVolume& volume);
+std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& photoSrgb,
+                                       const SolidVolume& volume);
 
-} // namespace solidtex
+}  // namespace solidtex

@@ -10,4 +10,4 @@ std::vector<float> squaredDistanceValues(float maxRadius) {
   return values;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -76,7 +76,8 @@ private:
     tbb::parallel_for(0, dims.z, [&](int k) {
       for (int j = 0; j < dims.y; ++j)
         for (int i = 0; i < dims.x; ++i)
-          keys[dims.index(i, j, k)] = Key(std::min<std::uint64_t>(keyOfWall(wallDistance(dims, i, j, k)), cap));
+          keys[dims.index(i, j, k)] =
+              Key(std::min<std::uint64_t>(keyOfWall(wallDistance(dims, i, j, k)), cap));
     });
     return keys;
   }
@@ -85,12 +86,14 @@ private:
 /// The narrowest unsigned type that holds keys up to maxKey.
 template <template <class> class Field, class... Args>
 std::unique_ptr<SpaciousnessField> makeWithNarrowestKey(std::uint64_t maxKey, Args&&... args) {
-  if (maxKey <= std::numeric_limits<std::uint8_t>::max()) return std::make_unique<Field<std::uint8_t>>(args...);
-  if (maxKey <= std::numeric_limits<std::uint16_t>::max()) return std::make_unique<Field<std::uint16_t>>(args...);
+  if (maxKey <= std::numeric_limits<std::uint8_t>::max())
+    return std::make_unique<Field<std::uint8_t>>(args...);
+  if (maxKey <= std::numeric_limits<std::uint16_t>::max())
+    return std::make_unique<Field<std::uint16_t>>(args...);
   return std::make_unique<Field<std::uint32_t>>(args...);
 }
 
 /// Values for squared-distance keys: sqrt(key), the last key (ceil(maxRadius^2)) standing for maxRadius.
 std::vector<float> squaredDistanceValues(float maxRadius);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -50,7 +50,8 @@ public:
   /// within a key a random sample without replacement (a partial Fisher-Yates shuffle of the bucket,
   /// whose order is otherwise irrelevant). Stale entries met on the way are dropped.
   void sample(std::size_t minKey, std::size_t maxCount, Rng& rng, std::vector<VoxelIndex>& out) {
-    for (std::size_t k = std::max<std::size_t>(minKey, 1); k < buckets_.size() && out.size() < maxCount; ++k) {
+    for (std::size_t k = std::max<std::size_t>(minKey, 1); k < buckets_.size() && out.size() < maxCount;
+         ++k) {
       std::vector<VoxelIndex>& bucket = buckets_[k];
       if (2 * staleIn_[k] > bucket.size()) compact(k);
       std::size_t taken = 0;
@@ -72,11 +73,13 @@ public:
   /// Hands up to maxCount voxels with keys >= minKey, drawn uniformly with replacement, to `take`.
   template <class Take>
   void sampleUniformly(std::size_t minKey, std::size_t maxCount, Rng& rng, Take&& take) const {
-    solidtex::detail::sampleUniformly(buckets_, std::max<std::size_t>(minKey, 1), maxCount, rng, [&](VoxelIndex v) {
-      if (keys_[v] == 0 || keys_[v] < minKey) return false;  // stale: lowered since
-      take(v);
-      return true;
-    });
+    solidtex::detail::sampleUniformly(buckets_, std::max<std::size_t>(minKey, 1), maxCount, rng,
+                                      [&](VoxelIndex v) {
+                                        if (keys_[v] == 0 || keys_[v] < minKey)
+                                          return false;  // stale: lowered since
+                                        take(v);
+                                        return true;
+                                      });
   }
 
   /// Heap bytes held (keys and buckets), for memory reports.
@@ -116,4 +119,4 @@ private:
   std::size_t stale_ = 0;             ///< bucket entries whose voxel has a lower key now
 };
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -9,7 +9,7 @@ namespace {
 
 constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
 
-} // namespace
+}  // namespace
 
 VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, double scale, Rng& rng) {
   const auto scaled = [scale](int pixels) { return int(std::max(1.0, std::round(pixels * scale))); };
@@ -59,4 +59,4 @@ ReadyShape ShapeSupply::take(const ShapeKey& key) {
   return shape;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

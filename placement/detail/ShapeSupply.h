@@ -60,4 +60,4 @@ private:
   tbb::task_group aheadTask_;
 };
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

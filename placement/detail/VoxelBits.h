@@ -28,4 +28,4 @@ private:
   std::vector<std::uint64_t> words_;
 };
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

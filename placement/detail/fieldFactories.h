@@ -11,4 +11,4 @@ std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadiu
 std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius);
 std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -15,7 +15,8 @@ Voxel nearestShapeVoxel(const VoxelShape& shape, const Voxel& centre) {
   for (int k = 0; k < shape.dims.z; ++k)
     for (int j = 0; j < shape.dims.y; ++j)
       for (int i = 0; i < shape.dims.x; ++i)
-        if (shape.inside[shape.dims.index(i, j, k)] != 0 && squaredDistance({i, j, k}, centre) < bestSquared) {
+        if (shape.inside[shape.dims.index(i, j, k)] != 0 &&
+            squaredDistance({i, j, k}, centre) < bestSquared) {
           best = {i, j, k};
           bestSquared = squaredDistance(best, centre);
         }
@@ -35,7 +36,7 @@ double innerRadiusOf(const VoxelShape& shape, const Voxel& a) {
   return std::sqrt(double(nearest));
 }
 
-} // namespace
+}  // namespace
 
 FitShape prepareShape(const VoxelShape& shape) {
   FitShape fit;
@@ -66,7 +67,8 @@ FitShape prepareShape(const VoxelShape& shape) {
   return fit;
 }
 
-bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied, Dims dims) {
+bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied,
+            Dims dims) {
   const Voxel o = originAt(shape, spot);
   if (o.x < 0 || o.y < 0 || o.z < 0 || o.x + shape.dims.x > dims.x || o.y + shape.dims.y > dims.y ||
       o.z + shape.dims.z > dims.z)
@@ -80,4 +82,4 @@ bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const 
   return true;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -12,11 +12,11 @@ namespace solidtex::detail {
 /// A shape ready to be tried at spots: the spot takes its anchor voxel.
 struct FitShape {
   Dims dims;
-  Voxel anchor;                       ///< local voxel put on the spot (the shape voxel nearest the box centre)
-  std::vector<Voxel> voxels;          ///< local voxels, farthest from the anchor first
+  Voxel anchor;               ///< local voxel put on the spot (the shape voxel nearest the box centre)
+  std::vector<Voxel> voxels;  ///< local voxels, farthest from the anchor first
   std::vector<std::int32_t> squared;  ///< their squared distances to the anchor, non-increasing
-  float innerRadius = 0;              ///< a spot needs at least this spaciousness: the nearest non-shape voxel
-  float outerRadius = 0;              ///< a spot with this spaciousness always fits: just beyond the farthest voxel
+  float innerRadius = 0;  ///< a spot needs at least this spaciousness: the nearest non-shape voxel
+  float outerRadius = 0;  ///< a spot with this spaciousness always fits: just beyond the farthest voxel
 };
 
 /// Prepares a non-empty shape; O(box) time.
@@ -30,6 +30,7 @@ inline Voxel originAt(const FitShape& shape, const Voxel& spot) {
 /// Whether the shape with its anchor on spot lies inside the volume and covers no occupied voxel.
 /// `spaciousness` is a lower bound of the spot's distance to the nearest occupied voxel: shape
 /// voxels nearer than that are known to be free and are not looked at.
-bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied, Dims dims);
+bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied,
+            Dims dims);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

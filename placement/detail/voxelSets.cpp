@@ -12,19 +12,20 @@ namespace solidtex::detail {
 
 void checkFieldArguments(Dims dims, float maxRadius) {
   if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0)
-    throw InputError("spaciousness field: volume dimensions must be positive, got " + std::to_string(dims.x) + "x" +
-                     std::to_string(dims.y) + "x" + std::to_string(dims.z));
+    throw InputError("spaciousness field: volume dimensions must be positive, got " + std::to_string(dims.x) +
+                     "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z));
   if (dims.count() >= std::size_t(std::numeric_limits<VoxelIndex>::max()))
     throw InputError("spaciousness field: volume of " + std::to_string(dims.count()) +
                      " voxels is too large (at most 2^32 - 1)");
   if (!(maxRadius > 0) || !std::isfinite(maxRadius))
-    throw InputError("spaciousness field: maxRadius must be positive and finite, got " + std::to_string(maxRadius));
+    throw InputError("spaciousness field: maxRadius must be positive and finite, got " +
+                     std::to_string(maxRadius));
 }
 
 void checkInside(Dims dims, const Voxel& v) {
   if (!dims.contains(v.x, v.y, v.z))
-    throw std::out_of_range("voxel (" + std::to_string(v.x) + "," + std::to_string(v.y) + "," + std::to_string(v.z) +
-                            ") lies outside the volume");
+    throw std::out_of_range("voxel (" + std::to_string(v.x) + "," + std::to_string(v.y) + "," +
+                            std::to_string(v.z) + ") lies outside the volume");
 }
 
 void checkInside(Dims dims, const std::vector<Voxel>& voxels) {
@@ -46,7 +47,9 @@ std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
   const Dims local{box.hi.x - box.lo.x + 1, box.hi.y - box.lo.y + 1, box.hi.z - box.lo.z + 1};
   std::vector<std::uint8_t> inside(local.count());
   for (const Voxel& v : voxels) inside[local.index(v.x - box.lo.x, v.y - box.lo.y, v.z - box.lo.z)] = 1;
-  const auto in = [&](int i, int j, int k) { return local.contains(i, j, k) && inside[local.index(i, j, k)] != 0; };
+  const auto in = [&](int i, int j, int k) {
+    return local.contains(i, j, k) && inside[local.index(i, j, k)] != 0;
+  };
   std::vector<Voxel> out;
   for (const Voxel& v : voxels) {
     const int i = v.x - box.lo.x, j = v.y - box.lo.y, k = v.z - box.lo.z;
@@ -57,4 +60,4 @@ std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
   return out;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

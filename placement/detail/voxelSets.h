@@ -46,4 +46,4 @@ inline std::int64_t squaredDistance(const Voxel& a, const Voxel& b) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

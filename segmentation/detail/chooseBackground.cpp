@@ -26,7 +26,7 @@ double solidPixels(const cv::Mat& labels, int label, const cv::Rect& box, double
   return area * std::min(1.0, area / hullPixelArea(hullOf(points)));
 }
 
-} // namespace
+}  // namespace
 
 double compactness(const cv::Mat& classMask, double minArea) {
   const double total = cv::countNonZero(classMask);
@@ -52,4 +52,4 @@ bool upperIsBackground(const cv::Mat& upper, double minArea) {
   return compactness(small, smallMinArea) < compactness(small == 0, smallMinArea);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -16,4 +16,4 @@ double compactness(const cv::Mat& classMask, double minArea);
 // packed gravel grains, which break into ragged pieces).
 bool upperIsBackground(const cv::Mat& upper, double minArea);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

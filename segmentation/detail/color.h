@@ -11,4 +11,4 @@ cv::Mat linearToSrgb(const cv::Mat& linear);
 // but from linear values (no second gamma decode) and several times faster than its float path.
 cv::Mat linearToLab(const cv::Mat& linear);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

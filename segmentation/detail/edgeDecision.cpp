@@ -11,7 +11,7 @@
 namespace solidtex::detail {
 namespace {
 
-constexpr float kReach = 3.0f * 1.4826f; // 3 robust standard deviations (1.4826 MAD)
+constexpr float kReach = 3.0f * 1.4826f;  // 3 robust standard deviations (1.4826 MAD)
 
 // Median + kReach MAD of the distances at or below `threshold`: how far the background's own
 // colours reach. Robust, because the lower class also holds the dim parts of particles that the
@@ -41,7 +41,7 @@ cv::Mat gradientMagnitude(const cv::Mat& image) {
   return magnitude;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split) {
   CV_Assert(distance.type() == CV_32FC1);
@@ -52,4 +52,4 @@ cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split) {
   return markerWatershed(markers, gradientMagnitude(distance)) == kBackground;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -12,4 +12,4 @@ namespace solidtex::detail {
 // them first through the distance's gradient, so the border settles on the visible edge.
 cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

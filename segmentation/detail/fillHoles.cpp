@@ -32,7 +32,7 @@ std::vector<int> soleNeighbours(const cv::Mat& labels, const cv::Mat& holes, int
   return owner;
 }
 
-} // namespace
+}  // namespace
 
 void fillEnclosedHoles(cv::Mat& labels) {
   CV_Assert(labels.type() == CV_32SC1);
@@ -43,7 +43,7 @@ void fillEnclosedHoles(cv::Mat& labels) {
   for (int i = 1; i < count; ++i) {
     const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
                        stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
-    if (touchesBorder(box, labels.size())) owner[std::size_t(i)] = kNobody; // open to the outside
+    if (touchesBorder(box, labels.size())) owner[std::size_t(i)] = kNobody;  // open to the outside
   }
   for (int y = 0; y < labels.rows; ++y) {
     const int* h = holes.ptr<int>(y);
@@ -53,4 +53,4 @@ void fillEnclosedHoles(cv::Mat& labels) {
   }
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

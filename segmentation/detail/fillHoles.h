@@ -9,4 +9,4 @@ namespace solidtex::detail {
 // in by several particles (between packed grains) stay background.
 void fillEnclosedHoles(cv::Mat& labels);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

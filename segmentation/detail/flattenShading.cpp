@@ -7,10 +7,10 @@
 namespace solidtex::detail {
 namespace {
 
-constexpr int kTerms = 6;              // 1, x, y, x^2, xy, y^2
-constexpr double kMinExplained = 0.25; // share of background variance the surface must explain
-constexpr double kMinShare = 0.02;     // background share of the image needed for a fit
-constexpr double kSamples = 65536;     // pixels the fit looks at, at most about
+constexpr int kTerms = 6;               // 1, x, y, x^2, xy, y^2
+constexpr double kMinExplained = 0.25;  // share of background variance the surface must explain
+constexpr double kMinShare = 0.02;      // background share of the image needed for a fit
+constexpr double kSamples = 65536;      // pixels the fit looks at, at most about
 
 using Terms = std::array<double, kTerms>;
 
@@ -22,7 +22,7 @@ Terms terms(int x, int y, const cv::Size& size) {
 
 struct Fit {
   cv::Matx<double, kTerms, 3> coefficients;
-  cv::Vec3d explained; // R^2 per channel
+  cv::Vec3d explained;  // R^2 per channel
 };
 
 // A smooth six-term surface needs no more than about kSamples evenly spread pixels.
@@ -63,10 +63,11 @@ Fit fitSurface(const cv::Mat& lab, const cv::Mat& mask) {
   return fit;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat flattenShading(const cv::Mat& lab, const cv::Mat& backgroundMask) {
-  CV_Assert(lab.type() == CV_32FC3 && backgroundMask.type() == CV_8UC1 && lab.size() == backgroundMask.size());
+  CV_Assert(lab.type() == CV_32FC3 && backgroundMask.type() == CV_8UC1 &&
+            lab.size() == backgroundMask.size());
   if (cv::countNonZero(backgroundMask) < kMinShare * double(lab.total()) + kTerms) return lab.clone();
   const Fit fit = fitSurface(lab, backgroundMask);
   const cv::Scalar mean = cv::mean(lab, backgroundMask);
@@ -86,4 +87,4 @@ cv::Mat flattenShading(const cv::Mat& lab, const cv::Mat& backgroundMask) {
   return flat;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -10,4 +10,4 @@ namespace solidtex::detail {
 // backgrounds are untouched.
 cv::Mat flattenShading(const cv::Mat& lab, const cv::Mat& backgroundMask);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -9,4 +9,4 @@ namespace solidtex::detail {
 // photo's size; throws InputError otherwise or when it cannot be read.
 cv::Mat loadMask(const std::string& path, const cv::Size& photoSize);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

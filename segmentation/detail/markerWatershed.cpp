@@ -10,7 +10,7 @@ namespace {
 
 struct Entry {
   float level;
-  std::uint64_t order; // insertion count: equal levels flood first-come first-served
+  std::uint64_t order;  // insertion count: equal levels flood first-come first-served
   int index;
   bool operator>(const Entry& o) const { return level != o.level ? level > o.level : order > o.order; }
 };
@@ -18,7 +18,10 @@ struct Entry {
 class Flooding {
 public:
   Flooding(cv::Mat& labels, const cv::Mat& relief)
-      : w_(labels.cols), h_(labels.rows), lab_(labels.ptr<uchar>()), lev_(relief.ptr<float>()),
+      : w_(labels.cols),
+        h_(labels.rows),
+        lab_(labels.ptr<uchar>()),
+        lev_(relief.ptr<float>()),
         queued_(labels.total(), 0) {}
 
   void run() {
@@ -70,7 +73,7 @@ private:
   std::uint64_t order_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 cv::Mat markerWatershed(const cv::Mat& markers, const cv::Mat& relief) {
   CV_Assert(markers.type() == CV_8UC1 && relief.type() == CV_32FC1 && markers.size() == relief.size());
@@ -80,4 +83,4 @@ cv::Mat markerWatershed(const cv::Mat& markers, const cv::Mat& relief) {
   return labels;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -9,4 +9,4 @@ namespace solidtex::detail {
 // settle on the relief's crests. Ties go first-come first-served, which keeps it deterministic.
 cv::Mat markerWatershed(const cv::Mat& markers, const cv::Mat& relief);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -48,7 +48,7 @@ void sortAndNumber(std::vector<Particle2D>& particles) {
   for (std::size_t i = 0; i < particles.size(); ++i) particles[i].id = int(i) + 1;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<Particle2D> measureParticles(const cv::Mat& labels, const cv::Mat& linear, double minArea) {
   CV_Assert(labels.type() == CV_32SC1 && linear.type() == CV_32FC3 && labels.size() == linear.size());
@@ -75,4 +75,4 @@ void measureBackground(ExemplarStats& stats, const cv::Mat& linear) {
   stats.areaFraction = 1.0 - double(backgroundPixels) / double(linear.total());
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

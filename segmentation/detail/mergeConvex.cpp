@@ -14,9 +14,9 @@ namespace {
 struct Piece {
   cv::Rect box;
   std::vector<cv::Point> hull;
-  double filled = 0; // pixels inside the outer outline, holes included
+  double filled = 0;  // pixels inside the outer outline, holes included
   double solidity = 0;
-  int version = 0;   // bumped on every merge, to recognise stale queue entries
+  int version = 0;  // bumped on every merge, to recognise stale queue entries
   std::set<int> neighbours;
 };
 
@@ -25,7 +25,7 @@ struct Piece {
 class FilledCounter {
 public:
   double count(const cv::Mat& labels, const cv::Rect& box, int a, int b) {
-    const int w = box.width + 2, h = box.height + 2; // a free frame around the box
+    const int w = box.width + 2, h = box.height + 2;  // a free frame around the box
     state_.assign(std::size_t(w) * std::size_t(h), kFree);
     for (int y = 0; y < box.height; ++y) {
       const int* l = labels.ptr<int>(box.y + y) + box.x;
@@ -48,7 +48,8 @@ private:
       const int i = stack_.back();
       stack_.pop_back();
       const int x = i % w, y = i / w;
-      const int next[4] = {x > 0 ? i - 1 : -1, x + 1 < w ? i + 1 : -1, y > 0 ? i - w : -1, y + 1 < h ? i + w : -1};
+      const int next[4] = {x > 0 ? i - 1 : -1, x + 1 < w ? i + 1 : -1, y > 0 ? i - w : -1,
+                           y + 1 < h ? i + w : -1};
       for (int n : next)
         if (n >= 0 && state_[std::size_t(n)] == kFree) {
           state_[std::size_t(n)] = kOutside;
@@ -91,7 +92,8 @@ std::vector<cv::Rect> boxesAndNeighbours(const cv::Mat& labels, std::vector<Piec
       b = b.empty() ? cv::Rect(x, y, 1, 1) : (b | cv::Rect(x, y, 1, 1));
       const auto touch = [&](int other) {
         if (other > 0 && other != l[x])
-          pieces[std::size_t(l[x])].neighbours.insert(other), pieces[std::size_t(other)].neighbours.insert(l[x]);
+          pieces[std::size_t(l[x])].neighbours.insert(other),
+              pieces[std::size_t(other)].neighbours.insert(l[x]);
       };
       if (x + 1 < labels.cols) touch(l[x + 1]);
       if (below) {
@@ -107,7 +109,7 @@ std::vector<cv::Rect> boxesAndNeighbours(const cv::Mat& labels, std::vector<Piec
 struct Candidate {
   double gain;
   int a, b, versionA, versionB;
-  bool operator<(const Candidate& o) const { // priority_queue pops the largest gain, then smallest ids
+  bool operator<(const Candidate& o) const {  // priority_queue pops the largest gain, then smallest ids
     return std::tie(gain, o.a, o.b) < std::tie(o.gain, a, b);
   }
 };
@@ -135,7 +137,8 @@ public:
     while (!queue_.empty()) {
       const Candidate c = queue_.top();
       queue_.pop();
-      if (c.versionA == pieces_[std::size_t(c.a)].version && c.versionB == pieces_[std::size_t(c.b)].version) merge(c.a, c.b);
+      if (c.versionA == pieces_[std::size_t(c.a)].version && c.versionB == pieces_[std::size_t(c.b)].version)
+        merge(c.a, c.b);
     }
   }
 
@@ -205,7 +208,7 @@ void relabelInRasterOrder(cv::Mat& labels) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void mergeWhereMoreConvex(cv::Mat& labels) {
   CV_Assert(labels.type() == CV_32SC1);
@@ -213,4 +216,4 @@ void mergeWhereMoreConvex(cv::Mat& labels) {
   relabelInRasterOrder(labels);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

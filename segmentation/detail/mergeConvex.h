@@ -11,4 +11,4 @@ namespace solidtex::detail {
 // neck form a notched, less solid union and stay apart. Relabels 1..N in raster order.
 void mergeWhereMoreConvex(cv::Mat& labels);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

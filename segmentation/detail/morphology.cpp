@@ -23,7 +23,7 @@ void replaceSmall(const cv::Mat& selected, cv::Mat& mask, double minArea, int co
   }
 }
 
-} // namespace
+}  // namespace
 
 void removeSmallComponents(cv::Mat& mask, double minArea) {
   CV_Assert(mask.type() == CV_8UC1);
@@ -36,4 +36,4 @@ void fillSmallHoles(cv::Mat& mask, double minArea) {
   replaceSmall(mask == 0, mask, minArea, 4, 255);
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -9,4 +9,4 @@ void removeSmallComponents(cv::Mat& mask, double minArea);
 // Sets the 4-connected holes (zero components) of a CV_8U mask smaller than minArea pixels.
 void fillSmallHoles(cv::Mat& mask, double minArea);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -9,7 +9,7 @@ namespace solidtex::detail {
 namespace {
 
 constexpr int kBins = 512;
-constexpr int kRangeBins = 4096; // resolution of the 0.1 % / 99.9 % quantiles
+constexpr int kRangeBins = 4096;  // resolution of the 0.1 % / 99.9 % quantiles
 
 template <typename Visit>
 void forEachValue(const cv::Mat& values, const cv::Mat& mask, Visit visit) {
@@ -34,7 +34,9 @@ Range robustRange(const cv::Mat& values, const cv::Mat& mask) {
   if (count < 2 || !(hi > lo)) return {lo, hi, count};
   std::vector<double> histogram(kRangeBins, 0);
   const double scale = kRangeBins / double(hi - lo);
-  forEachValue(values, mask, [&](float v) { histogram[std::size_t(std::min(kRangeBins - 1, int((v - lo) * scale)))] += 1; });
+  forEachValue(values, mask, [&](float v) {
+    histogram[std::size_t(std::min(kRangeBins - 1, int((v - lo) * scale)))] += 1;
+  });
   const auto quantile = [&](double q) {
     double seen = 0;
     for (int b = 0; b < kRangeBins; ++b)
@@ -44,10 +46,11 @@ Range robustRange(const cv::Mat& values, const cv::Mat& mask) {
   return {quantile(0.001), std::max(quantile(0.999) + float(1 / scale), lo), count};
 }
 
-} // namespace
+}  // namespace
 
 OtsuSplit otsu(const cv::Mat& values, const cv::Mat& mask) {
-  CV_Assert(values.type() == CV_32FC1 && (mask.empty() || (mask.type() == CV_8UC1 && mask.size() == values.size())));
+  CV_Assert(values.type() == CV_32FC1 &&
+            (mask.empty() || (mask.type() == CV_8UC1 && mask.size() == values.size())));
   const Range range = robustRange(values, mask);
   OtsuSplit best;
   best.threshold = range.lo;
@@ -75,11 +78,15 @@ OtsuSplit otsu(const cv::Mat& values, const cv::Mat& mask) {
     const double between = n0 * n1 / (n * n) * (m1 - m0) * (m1 - m0);
     if (between > bestBetween) {
       bestBetween = between;
-      best = {float(lo + (b + 1) * binWidth), totalVar > 0 ? between / totalVar : 0.0, m0, m1,
-              std::sqrt(std::max(0.0, q0 / n0 - m0 * m0)), std::sqrt(std::max(0.0, (totalSq - q0) / n1 - m1 * m1))};
+      best = {float(lo + (b + 1) * binWidth),
+              totalVar > 0 ? between / totalVar : 0.0,
+              m0,
+              m1,
+              std::sqrt(std::max(0.0, q0 / n0 - m0 * m0)),
+              std::sqrt(std::max(0.0, (totalSq - q0) / n1 - m1 * m1))};
     }
   }
   return best;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

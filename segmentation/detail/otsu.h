@@ -4,8 +4,8 @@
 namespace solidtex::detail {
 
 struct OtsuSplit {
-  float threshold = 0;     // values > threshold form the upper class
-  double separability = 0; // between-class / total variance (Otsu's eta), 0 when undefined
+  float threshold = 0;      // values > threshold form the upper class
+  double separability = 0;  // between-class / total variance (Otsu's eta), 0 when undefined
   double lowerMean = 0, upperMean = 0;
   double lowerStddev = 0, upperStddev = 0;
 };
@@ -15,4 +15,4 @@ struct OtsuSplit {
 // (specular highlights, dead pixels) cannot squeeze the useful range into a few bins.
 OtsuSplit otsu(const cv::Mat& values, const cv::Mat& mask = {});
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -16,13 +16,13 @@
 namespace solidtex::detail {
 namespace {
 
-constexpr double kMinSpread = 1.0;   // Lab units: a feature flatter than this carries no classes
-constexpr double kMinContrast = 5.0; // Delta E between the class means: below it, no visible classes
-constexpr int kChroma = 3;           // feature index after L, a, b
+constexpr double kMinSpread = 1.0;    // Lab units: a feature flatter than this carries no classes
+constexpr double kMinContrast = 5.0;  // Delta E between the class means: below it, no visible classes
+constexpr int kChroma = 3;            // feature index after L, a, b
 
 // The feature that separates the classes best, and on which side of it the background lies.
 struct Axis {
-  int feature = -1; // 0..2: L, a, b; kChroma: chroma
+  int feature = -1;  // 0..2: L, a, b; kChroma: chroma
   float threshold = 0;
   bool backgroundAbove = false;
   bool valid() const { return feature >= 0; }
@@ -76,7 +76,8 @@ void clampBeyondBackground(cv::Mat& lab, const Axis& axis, const cv::Scalar& mea
         continue;
       }
       const double c = std::hypot(p[x][1], p[x][2]);
-      if ((above ? c > chroma : c < chroma) && c > 1e-6) p[x][1] *= float(chroma / c), p[x][2] *= float(chroma / c);
+      if ((above ? c > chroma : c < chroma) && c > 1e-6)
+        p[x][1] *= float(chroma / c), p[x][2] *= float(chroma / c);
     }
   }
 }
@@ -99,7 +100,7 @@ cv::Mat backgroundDistance(const cv::Mat& lab, const Axis& axis, const cv::Mat& 
   return distance;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
   CV_Assert(linear.type() == CV_32FC3);
@@ -126,4 +127,4 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
   return particles;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

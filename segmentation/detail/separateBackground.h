@@ -9,4 +9,4 @@ namespace solidtex::detail {
 // classes.
 cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -39,4 +39,4 @@ bool touchesBorder(const cv::Rect& box, const cv::Size& size) {
   return box.x == 0 || box.y == 0 || box.br().x == size.width || box.br().y == size.height;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

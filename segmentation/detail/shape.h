@@ -18,4 +18,4 @@ std::vector<cv::Rect> labelBoxes(const cv::Mat& labels);
 // Whether a box within an image of `size` reaches the image's edge.
 bool touchesBorder(const cv::Rect& box, const cv::Size& size);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -32,7 +32,8 @@ public:
     return parent_.back();
   }
   int find(int b) {
-    while (parent_[std::size_t(b)] != b) b = parent_[std::size_t(b)] = parent_[std::size_t(parent_[std::size_t(b)])];
+    while (parent_[std::size_t(b)] != b)
+      b = parent_[std::size_t(b)] = parent_[std::size_t(parent_[std::size_t(b)])];
     return b;
   }
   float peak(int b) const { return peak_[std::size_t(b)]; }
@@ -47,7 +48,7 @@ private:
 
 struct Flood {
   const cv::Mat& dist;
-  std::vector<int> basin; // per pixel, -1 until flooded
+  std::vector<int> basin;  // per pixel, -1 until flooded
   Basins basins;
 
   explicit Flood(const cv::Mat& d) : dist(d), basin(d.total(), -1) {}
@@ -120,7 +121,7 @@ cv::Mat relabel(Flood& flood, const cv::Size& size) {
   return labels;
 }
 
-} // namespace
+}  // namespace
 
 cv::Mat labelParticles(const cv::Mat& mask, bool split) {
   CV_Assert(mask.type() == CV_8UC1);
@@ -139,4 +140,4 @@ cv::Mat labelParticles(const cv::Mat& mask, bool split) {
   return labels;
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

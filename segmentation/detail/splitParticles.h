@@ -13,4 +13,4 @@ namespace solidtex::detail {
 // (mergeWhereMoreConvex).
 cv::Mat labelParticles(const cv::Mat& mask, bool split);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

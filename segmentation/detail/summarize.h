@@ -11,4 +11,4 @@ AreaHistogram buildAreaHistogram(const std::vector<const Particle2D*>& particles
 // Distinct (width, height) box sizes with their counts, sorted by (width, height).
 std::vector<SizePair> buildSizePairs(const std::vector<const Particle2D*>& particles);
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -20,7 +20,8 @@ Eigen::MatrixXf gatherExemplarNeighborhoods(const RgbImage& image, const Neighbo
   return out;
 }
 
-ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape, int pcaDims) {
+ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape,
+                                                 int pcaDims) {
   ExemplarNeighborhoods n;
   n.shape = shape;
   n.exemplarWidth = image.width;
@@ -36,4 +37,4 @@ ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const Ne
   return n;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

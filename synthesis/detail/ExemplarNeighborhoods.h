@@ -17,9 +17,9 @@ struct ExemplarNeighborhoods {
   NeighborhoodShape shape;
   int exemplarWidth = 0, exemplarHeight = 0;
   int x0 = 0, y0 = 0, cols = 0, rows = 0;
-  Eigen::MatrixXf full;         ///< D x M full vectors
+  Eigen::MatrixXf full;  ///< D x M full vectors
   Pca pca;
-  std::vector<float> reduced;   ///< M x d, row-major: neighbourhood m's coefficients at m*d
+  std::vector<float> reduced;  ///< M x d, row-major: neighbourhood m's coefficients at m*d
 
   int count() const { return cols * rows; }
   int reducedDims() const { return pca.dims(); }
@@ -38,6 +38,7 @@ struct ExemplarNeighborhoods {
 Eigen::MatrixXf gatherExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape);
 
 /// Gathers, fits a PCA with `pcaDims` components (clamped to D) and reduces every neighbourhood.
-ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape, int pcaDims);
+ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape,
+                                                 int pcaDims);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

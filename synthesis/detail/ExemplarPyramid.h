@@ -30,6 +30,7 @@ RgbImage halve(const RgbImage& image);
 
 /// Builds `levels` levels from the finest exemplar; the control map (one value per finest pixel) is
 /// averaged alongside. Control values are shifted by a small floor so that black still appears a little.
-ExemplarPyramid buildExemplarPyramid(const RgbImage& finest, int levels, const std::vector<float>& control = {});
+ExemplarPyramid buildExemplarPyramid(const RgbImage& finest, int levels,
+                                     const std::vector<float>& control = {});
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

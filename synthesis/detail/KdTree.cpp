@@ -18,13 +18,16 @@ struct PointSet {
   std::size_t kdtree_get_point_count() const { return std::size_t(count); }
   float kdtree_get_pt(std::size_t idx, std::size_t dim) const { return points[idx * dims + dim]; }
   template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
 };
 
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointSet, float, std::uint32_t>, PointSet, -1,
-                                                 std::uint32_t>;
+using Tree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointSet, float, std::uint32_t>,
+                                        PointSet, -1, std::uint32_t>;
 
-} // namespace
+}  // namespace
 
 struct KdTree::Impl {
   PointSet set;
@@ -33,7 +36,8 @@ struct KdTree::Impl {
       : set{points, count, dims}, tree(dims, set, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
 };
 
-KdTree::KdTree(const float* points, int count, int dims) : impl_(std::make_unique<Impl>(points, count, dims)) {}
+KdTree::KdTree(const float* points, int count, int dims)
+    : impl_(std::make_unique<Impl>(points, count, dims)) {}
 KdTree::~KdTree() = default;
 
 int KdTree::count() const { return impl_->set.count; }
@@ -49,7 +53,8 @@ void KdTree::knn(const float* query, int k, std::int32_t* ids, float* squaredDis
   const int found = int(result.size());
   std::vector<int> order(found);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return dist[a] != dist[b] ? dist[a] < dist[b] : idx[a] < idx[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return dist[a] != dist[b] ? dist[a] < dist[b] : idx[a] < idx[b]; });
   for (int i = 0; i < found; ++i) {
     ids[i] = std::int32_t(idx[order[i]]);
     squaredDistances[i] = dist[order[i]];
@@ -68,4 +73,4 @@ std::int32_t KdTree::nearest(const float* query, float* squaredDistance, float e
   return id;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

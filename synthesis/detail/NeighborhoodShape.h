@@ -14,4 +14,4 @@ struct NeighborhoodShape {
   int dims() const { return size * size * 3; }
 };
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -41,4 +41,4 @@ Pca fitPca(const Eigen::MatrixXf& samples, int dims) {
   return pca;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -25,4 +25,4 @@ struct Pca {
 /// Covariance is accumulated in double precision; deterministic.
 Pca fitPca(const Eigen::MatrixXf& samples, int dims);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

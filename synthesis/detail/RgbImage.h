@@ -14,4 +14,4 @@ struct RgbImage {
   float* at(int x, int y) { return data.data() + 3 * (std::size_t(y) * width + x); }
 };
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

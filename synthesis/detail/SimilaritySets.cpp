@@ -14,13 +14,14 @@ namespace solidtex::synthesis {
 namespace {
 
 bool tooClose(const ExemplarNeighborhoods& n, int a, int b, int minSeparation) {
-  return std::abs(n.centreX(a) - n.centreX(b)) <= minSeparation && std::abs(n.centreY(a) - n.centreY(b)) <= minSeparation;
+  return std::abs(n.centreX(a) - n.centreX(b)) <= minSeparation &&
+         std::abs(n.centreY(a) - n.centreY(b)) <= minSeparation;
 }
 
 /// Fills the set of m from candidates sorted by (distance, id): self first, then admissible others;
 /// if too few are admissible, the closest inadmissible ones fill up.
-void fillSet(const ExemplarNeighborhoods& n, int m, int k, int minSeparation, const std::vector<std::pair<float, std::int32_t>>& sorted,
-             std::int32_t* out) {
+void fillSet(const ExemplarNeighborhoods& n, int m, int k, int minSeparation,
+             const std::vector<std::pair<float, std::int32_t>>& sorted, std::int32_t* out) {
   int filled = 0;
   out[filled++] = m;
   for (const auto& [d, id] : sorted)
@@ -30,7 +31,7 @@ void fillSet(const ExemplarNeighborhoods& n, int m, int k, int minSeparation, co
   while (filled < k) out[filled++] = m;
 }
 
-} // namespace
+}  // namespace
 
 SimilaritySets buildSimilaritySets(const ExemplarNeighborhoods& n, int k, int minSeparation) {
   const int count = n.count();
@@ -79,4 +80,4 @@ SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& n, int k, i
   return sets;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

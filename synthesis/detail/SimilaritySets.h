@@ -23,6 +23,7 @@ struct SimilaritySets {
 SimilaritySets buildSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k, int minSeparation = 0);
 
 /// The same sets by exhaustive search (reference for tests; O(M^2)).
-SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k, int minSeparation = 0);
+SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k,
+                                        int minSeparation = 0);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -32,7 +32,8 @@ inline float boundedSquaredDistance(const float* a, const float* b, int d, float
       const float t = a[c + l] - b[c + l];
       part[l] += t * t;
     }
-    if (c >= 4 && (part[0] + part[1]) + (part[2] + part[3]) > bound) return (part[0] + part[1]) + (part[2] + part[3]);
+    if (c >= 4 && (part[0] + part[1]) + (part[2] + part[3]) > bound)
+      return (part[0] + part[1]) + (part[2] + part[3]);
   }
   float s = (part[0] + part[1]) + (part[2] + part[3]);
   for (; c < d; ++c) {
@@ -46,8 +47,9 @@ inline float boundedSquaredDistance(const float* a, const float* b, int d, float
 /// `radius`, the similarity set of the exemplar neighbourhood that u's source pixel implies,
 /// shifted back by u's offset. Each set is taken once: in coherent regions all neighbours imply
 /// the same set. (Ids may still repeat across different sets; considering one twice is harmless.)
-void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& ex, const SimilaritySets& sets, int axis,
-                         const std::array<int, 3>& c, int radius, std::vector<std::int32_t>& out) {
+void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& ex,
+                         const SimilaritySets& sets, int axis, const std::array<int, 3>& c, int radius,
+                         std::vector<std::int32_t>& out) {
   out.clear();
   const SliceAxes sa = sliceAxes(axis);
   std::array<int, 3> u = c;
@@ -74,17 +76,23 @@ void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& 
 /// so the winner does not depend on the order in which candidates are considered.
 class BestCandidate {
 public:
-  BestCandidate(const float* query, int dims, const SearchSettings& settings, double floor, const std::vector<std::int64_t>& indexHistogram,
-                std::int32_t previous)
-      : query_(query), dims_(dims), settings_(settings), floor_(settings.phi ? floor : 0.0), indexHistogram_(indexHistogram), previous_(previous) {}
+  BestCandidate(const float* query, int dims, const SearchSettings& settings, double floor,
+                const std::vector<std::int64_t>& indexHistogram, std::int32_t previous)
+      : query_(query),
+        dims_(dims),
+        settings_(settings),
+        floor_(settings.phi ? floor : 0.0),
+        indexHistogram_(indexHistogram),
+        previous_(previous) {}
 
   void consider(int m, const float* coefficients) {
     const float distance = boundedSquaredDistance(query_, coefficients, dims_, bound_);
     if (distance > bound_) return;
     double score = distance;
     if (settings_.phi)
-      score = indexHistogramDistance(score + floor_, settings_.histogramScale * (double(indexHistogram_[m]) - (m == previous_ ? 1 : 0)),
-                                     settings_.histogramScale * (*settings_.phi)[m]);
+      score = indexHistogramDistance(
+          score + floor_, settings_.histogramScale * (double(indexHistogram_[m]) - (m == previous_ ? 1 : 0)),
+          settings_.histogramScale * (*settings_.phi)[m]);
     if (score < bestScore_ || (score == bestScore_ && m < best_)) {
       bestScore_ = score;
       best_ = m;
@@ -121,7 +129,8 @@ struct SortedByFirstCoefficient {
     const int M = ex.count(), d = ex.reducedDims();
     id.resize(M);
     for (int m = 0; m < M; ++m) id[m] = m;
-    std::stable_sort(id.begin(), id.end(), [&](std::int32_t a, std::int32_t b) { return ex.reducedAt(a)[0] < ex.reducedAt(b)[0]; });
+    std::stable_sort(id.begin(), id.end(),
+                     [&](std::int32_t a, std::int32_t b) { return ex.reducedAt(a)[0] < ex.reducedAt(b)[0]; });
     key.resize(M);
     coefficients.resize(std::size_t(M) * d);
     for (int r = 0; r < M; ++r) {
@@ -144,20 +153,24 @@ void considerAll(const SortedByFirstCoefficient& sorted, int d, const float* y, 
   };
   while (up < M || down >= 0) {
     if (up < M) {
-      if (beyond(up)) up = M;
-      else best.consider(sorted.id[up], sorted.coefficients.data() + up * d), ++up;
+      if (beyond(up))
+        up = M;
+      else
+        best.consider(sorted.id[up], sorted.coefficients.data() + up * d), ++up;
     }
     if (down >= 0) {
-      if (beyond(down)) down = -1;
-      else best.consider(sorted.id[down], sorted.coefficients.data() + down * d), --down;
+      if (beyond(down))
+        down = -1;
+      else
+        best.consider(sorted.id[down], sorted.coefficients.data() + down * d), --down;
     }
   }
 }
 
-} // namespace
+}  // namespace
 
-double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, const SearchSettings& settings, SliceMatches& matches,
-                   std::vector<std::int64_t>& indexHistogram) {
+double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, const SearchSettings& settings,
+                   SliceMatches& matches, std::vector<std::int64_t>& indexHistogram) {
   const SliceCentreGrid& grid = matches.grid;
   const std::size_t count = grid.count();
   const int D = ex.shape.dims();
@@ -173,38 +186,41 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
   std::vector<std::int32_t> previous = matches.match;
   // Exhaustive levels are small (a few thousand neighbourhoods): sorting costs next to nothing.
   std::unique_ptr<SortedByFirstCoefficient> sorted;
-  if (settings.exhaustive || (!useSets && !settings.tree)) sorted = std::make_unique<SortedByFirstCoefficient>(ex);
+  if (settings.exhaustive || (!useSets && !settings.tree))
+    sorted = std::make_unique<SortedByFirstCoefficient>(ex);
 
   for (int b = 0; b < batches; ++b) {
     const std::size_t inBatch = count > std::size_t(b) ? (count - b + batches - 1) / batches : 0;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inBatch, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-      Scratch s;
-      s.full.resize(D);
-      s.reduced.resize(d);
-      for (std::size_t t = r.begin(); t != r.end(); ++t) {
-        const std::size_t id = std::size_t(b) + t * batches;
-        const int axis = grid.axisOf(id);
-        const std::array<int, 3> c = grid.voxelOf(id);
-        gatherSliceNeighborhood(volume, axis, c, ex.shape, s.full.data());
-        s.centred = s.full - ex.pca.mean;
-        s.reduced.noalias() = basisT * s.centred;
-        const float* y = s.reduced.data();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inBatch, 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        Scratch s;
+                        s.full.resize(D);
+                        s.reduced.resize(d);
+                        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+                          const std::size_t id = std::size_t(b) + t * batches;
+                          const int axis = grid.axisOf(id);
+                          const std::array<int, 3> c = grid.voxelOf(id);
+                          gatherSliceNeighborhood(volume, axis, c, ex.shape, s.full.data());
+                          s.centred = s.full - ex.pca.mean;
+                          s.reduced.noalias() = basisT * s.centred;
+                          const float* y = s.reduced.data();
 
-        BestCandidate best(y, d, settings, floor, indexHistogram, previous[id]);
-        if (previous[id] >= 0) best.consider(previous[id], ex.reducedAt(previous[id]));
-        if (sorted) {
-          considerAll(*sorted, d, y, best);
-        } else if (useSets) {
-          coherenceCandidates(volume, ex, *settings.sets, axis, c, settings.coherenceRadius, s.candidates);
-          for (std::int32_t m : s.candidates) best.consider(m, ex.reducedAt(m));
-        } else {
-          const int m = settings.tree->nearest(y);
-          best.consider(m, ex.reducedAt(m));
-        }
-        matches.match[id] = best.best();
-        matches.distance[id] = (s.full - ex.full.col(best.best())).squaredNorm();
-      }
-    });
+                          BestCandidate best(y, d, settings, floor, indexHistogram, previous[id]);
+                          if (previous[id] >= 0) best.consider(previous[id], ex.reducedAt(previous[id]));
+                          if (sorted) {
+                            considerAll(*sorted, d, y, best);
+                          } else if (useSets) {
+                            coherenceCandidates(volume, ex, *settings.sets, axis, c, settings.coherenceRadius,
+                                                s.candidates);
+                            for (std::int32_t m : s.candidates) best.consider(m, ex.reducedAt(m));
+                          } else {
+                            const int m = settings.tree->nearest(y);
+                            best.consider(m, ex.reducedAt(m));
+                          }
+                          matches.match[id] = best.best();
+                          matches.distance[id] = (s.full - ex.full.col(best.best())).squaredNorm();
+                        }
+                      });
     // Refresh the index histogram with this batch's new matches (integer counts: order-free).
     for (std::size_t id = b; id < count; id += batches) {
       if (previous[id] >= 0) --indexHistogram[previous[id]];
@@ -216,4 +232,4 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
   return count ? sum / double(count) / D : 0.0;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

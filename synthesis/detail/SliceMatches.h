@@ -17,19 +17,21 @@ struct SliceMatches {
   std::vector<std::int32_t> match;  ///< exemplar neighbourhood id, -1 before the first search
   std::vector<float> distance;      ///< squared distance over all shape.dims() components
 
-  explicit SliceMatches(const SliceCentreGrid& g = {}) : grid(g), match(g.count(), -1), distance(g.count(), 0.0f) {}
+  explicit SliceMatches(const SliceCentreGrid& g = {})
+      : grid(g), match(g.count(), -1), distance(g.count(), 0.0f) {}
 };
 
 /// How the search phase finds each slice neighbourhood's nearest exemplar neighbourhood.
 struct SearchSettings {
   const SimilaritySets* sets = nullptr;  ///< k-coherence search over the candidate set (needs volume.source)
-  const KdTree* tree = nullptr;          ///< kd-tree over the PCA coefficients (when no sets / not exhaustive)
-  bool exhaustive = false;               ///< every exemplar neighbourhood is a candidate
-  int coherenceRadius = 1;               ///< k-coherence: neighbours within this slice radius give candidates
-  const std::vector<double>* phi = nullptr;  ///< index-histogram matching (eq. 5-6) against these expected counts
-  double histogramScale = 1.0;           ///< H and phi are multiplied by this before eq. 6 (1 = plain counts)
-  double distanceFloor = 1e-4;           ///< per component, added to squared distances before eq. 5
-  int batches = 4;                       ///< index histogram refreshed between interleaved batches
+  const KdTree* tree = nullptr;  ///< kd-tree over the PCA coefficients (when no sets / not exhaustive)
+  bool exhaustive = false;       ///< every exemplar neighbourhood is a candidate
+  int coherenceRadius = 1;       ///< k-coherence: neighbours within this slice radius give candidates
+  const std::vector<double>* phi =
+      nullptr;                  ///< index-histogram matching (eq. 5-6) against these expected counts
+  double histogramScale = 1.0;  ///< H and phi are multiplied by this before eq. 6 (1 = plain counts)
+  double distanceFloor = 1e-4;  ///< per component, added to squared distances before eq. 5
+  int batches = 4;              ///< index histogram refreshed between interleaved batches
 };
 
 /// Search phase over all centres of `matches.grid`, comparing PCA coefficients. With `phi`, the
@@ -37,7 +39,8 @@ struct SearchSettings {
 /// per exemplar neighbourhood), which is kept up to date. The previous match is always a candidate.
 /// Returns the energy: mean over centres of the squared distance per component. Deterministic for
 /// any thread count.
-double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& exemplar, const SearchSettings& settings,
-                   SliceMatches& matches, std::vector<std::int64_t>& indexHistogram);
+double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& exemplar,
+                   const SearchSettings& settings, SliceMatches& matches,
+                   std::vector<std::int64_t>& indexHistogram);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -2,8 +2,8 @@
 
 namespace solidtex::synthesis {
 
-void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c, const NeighborhoodShape& shape,
-                             float* out) {
+void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c,
+                             const NeighborhoodShape& shape, float* out) {
   const SliceAxes s = sliceAxes(axis);
   std::array<int, 3> p = c;
   for (int j = shape.lo(); j <= shape.hi(); ++j) {
@@ -18,4 +18,4 @@ void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::arra
   }
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

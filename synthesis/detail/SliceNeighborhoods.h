@@ -19,8 +19,8 @@ inline SliceAxes sliceAxes(int axis) {
 
 /// Copies the neighbourhood of voxel `c` in the slice orthogonal to `axis` (periodic) into `out`
 /// (shape.dims() floats, same layout as exemplar neighbourhoods).
-void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c, const NeighborhoodShape& shape,
-                             float* out);
+void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c,
+                             const NeighborhoodShape& shape, float* out);
 
 /// The voxels where slice neighbourhoods are matched: for each axis, every voxel whose two in-plane
 /// coordinates are multiples of `step` (step 1 = every voxel; 2 = a quarter, each voxel still
@@ -58,7 +58,8 @@ struct SliceCentreGrid {
 /// `v`, where (i, j) is v's offset from that centre in slice coordinates (exemplar x, y).
 /// Visits only offsets whose centre lies on the grid (every step-th), in increasing j, then i.
 template <class F>
-void forEachCoveringCentre(const SliceCentreGrid& grid, const NeighborhoodShape& shape, const std::array<int, 3>& v, F&& f) {
+void forEachCoveringCentre(const SliceCentreGrid& grid, const NeighborhoodShape& shape,
+                           const std::array<int, 3>& v, F&& f) {
   const int n = grid.n, step = grid.step;
   // The smallest offset >= lo whose centre coordinate (x - offset) is a multiple of step.
   auto firstOffset = [&](int x) {
@@ -79,4 +80,4 @@ void forEachCoveringCentre(const SliceCentreGrid& grid, const NeighborhoodShape&
   }
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -32,4 +32,4 @@ void forEachVoxelInBatchSequential(int n, int batch, F&& f) {
       for (int x = bx; x < n; x += 2) f(std::array<int, 3>{x, y, z}, (std::size_t(z) * n + y) * n + x);
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -73,8 +73,10 @@ void mergeRepeatedPixels(std::vector<Proposal>& proposals) {
   }
   std::size_t out = 0;
   for (std::size_t i = 0; i < proposals.size(); ++i) {
-    if (out > 0 && proposals[out - 1].pixel == proposals[i].pixel) proposals[out - 1].weight += proposals[i].weight;
-    else proposals[out++] = proposals[i];
+    if (out > 0 && proposals[out - 1].pixel == proposals[i].pixel)
+      proposals[out - 1].weight += proposals[i].weight;
+    else
+      proposals[out++] = proposals[i];
   }
   proposals.resize(out);
 }
@@ -112,12 +114,14 @@ inline float colorKernel(float x) {
 /// evaluated once (the kernel is symmetric). The proposals' colours are copied side by side first
 /// (the inner loop would otherwise chase exemplar indices), and a's own vote is summed in a
 /// register; the additions happen in the same order either way.
-std::int32_t colorMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth, std::vector<float>& votes,
-                        std::vector<float>& colors) {
+std::int32_t colorMode(const std::vector<Proposal>& merged, const RgbImage& exemplar, float invBandwidth,
+                       std::vector<float>& votes, std::vector<float>& colors) {
   const std::size_t n = merged.size();
   votes.assign(n, 0.0f);
   colors.resize(3 * n);
-  for (std::size_t a = 0; a < n; ++a) std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3, colors.begin() + std::ptrdiff_t(3 * a));
+  for (std::size_t a = 0; a < n; ++a)
+    std::copy_n(exemplar.data.data() + 3 * std::size_t(merged[a].pixel), 3,
+                colors.begin() + std::ptrdiff_t(3 * a));
   for (std::size_t a = 0; a < n; ++a) {
     const float* ea = colors.data() + 3 * a;
     const float wa = merged[a].weight;
@@ -159,8 +163,8 @@ std::int32_t nearestToAverage(const std::vector<Proposal>& merged, const RgbImag
 }
 
 /// Moves the histograms from the sources in `before` to those now in the volume, for one batch.
-void refreshHistograms(const WorkVolume& volume, const std::vector<std::int32_t>& before, const RgbImage& exemplar, int batch,
-                       const DiscreteHistograms& h) {
+void refreshHistograms(const WorkVolume& volume, const std::vector<std::int32_t>& before,
+                       const RgbImage& exemplar, int batch, const DiscreteHistograms& h) {
   forEachVoxelInBatchSequential(volume.n, batch, [&](const std::array<int, 3>&, std::size_t vi) {
     const std::int32_t now = volume.source[vi], old = before[vi];
     if (now == old) return;
@@ -173,10 +177,11 @@ void refreshHistograms(const WorkVolume& volume, const std::vector<std::int32_t>
   });
 }
 
-} // namespace
+}  // namespace
 
-void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex, const SliceMatches& matches,
-                   const DiscreteHistograms& histograms, const DiscreteSolveSettings& settings) {
+void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex,
+                   const SliceMatches& matches, const DiscreteHistograms& histograms,
+                   const DiscreteSolveSettings& settings) {
   const int W = exemplar.width;
   const double exponent = (settings.irlsExponent - 2.0) / 2.0;  // on squared distances
   const double eps = settings.irlsEpsilon * ex.shape.dims();
@@ -184,7 +189,8 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
   if (volume.source.size() != volume.count()) volume.source.assign(volume.count(), -1);
   // IRLS weight per matched neighbourhood, computed once.
   std::vector<float> irls(matches.distance.size());
-  tbb::parallel_for(std::size_t(0), irls.size(), [&](std::size_t i) { irls[i] = float(std::pow(matches.distance[i] + eps, exponent)); });
+  tbb::parallel_for(std::size_t(0), irls.size(),
+                    [&](std::size_t i) { irls[i] = float(std::pow(matches.distance[i] + eps, exponent)); });
 
   const std::vector<std::int32_t> before = volume.source;
   for (int batch = 0; batch < kParityBatches; ++batch) {
@@ -206,9 +212,15 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
       mergeRepeatedPixels(proposals);
       std::int32_t best = -1;
       switch (settings.choice) {
-        case ProposalChoice::LargestVote: best = largestVote(proposals); break;
-        case ProposalChoice::ColorMode: best = colorMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colors); break;
-        case ProposalChoice::NearestToAverage: best = nearestToAverage(proposals, exemplar); break;
+        case ProposalChoice::LargestVote:
+          best = largestVote(proposals);
+          break;
+        case ProposalChoice::ColorMode:
+          best = colorMode(proposals, exemplar, invBandwidth, scratch.votes, scratch.colors);
+          break;
+        case ProposalChoice::NearestToAverage:
+          best = nearestToAverage(proposals, exemplar);
+          break;
       }
       if (best < 0) return;
       volume.source[vi] = best;
@@ -219,4 +231,4 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
   }
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -4,7 +4,8 @@
 
 namespace solidtex::synthesis {
 
-double colorHistogramWeight(double w, const std::array<double, 3>& synthesizedAtBins, const std::array<double, 3>& exemplarAtBins) {
+double colorHistogramWeight(double w, const std::array<double, 3>& synthesizedAtBins,
+                            const std::array<double, 3>& exemplarAtBins) {
   double excess = 0;
   for (int j = 0; j < 3; ++j) excess += std::max(0.0, synthesizedAtBins[j] - exemplarAtBins[j]);
   return w / (1.0 + excess);
@@ -34,4 +35,4 @@ ChannelHistograms channelHistograms(const float* rgb, std::size_t count, int bin
   return h;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

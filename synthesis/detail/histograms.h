@@ -10,12 +10,15 @@ namespace solidtex::synthesis {
 /// Chen–Wang eq. 3 (Kopf et al.'s colour histogram re-weighting):
 /// w' = w / (1 + sum_j max(0, Hs_j(b_j(e)) - He_j(b_j(e)))), given for each histogram j the value
 /// of the synthesised and of the exemplar histogram at the bin holding e.
-double colorHistogramWeight(double w, const std::array<double, 3>& synthesizedAtBins, const std::array<double, 3>& exemplarAtBins);
+double colorHistogramWeight(double w, const std::array<double, 3>& synthesizedAtBins,
+                            const std::array<double, 3>& exemplarAtBins);
 
 /// Chen–Wang eq. 4 (position histogram re-weighting): w' = w / (1 + max(0, H(p(e)) - theta)),
 /// H the number of voxels copying pixel p, theta that number were all pixels used evenly
 /// (or the control map's theta(p)).
-inline double positionHistogramWeight(double w, double h, double theta) { return w / (1.0 + std::max(0.0, h - theta)); }
+inline double positionHistogramWeight(double w, double h, double theta) {
+  return w / (1.0 + std::max(0.0, h - theta));
+}
 
 /// Chen–Wang eq. 6: w_d = 1 + max(0, H(i(e)) - phi), H the number of slice neighbourhoods whose
 /// nearest exemplar neighbourhood is i, phi that number were all indices used evenly.
@@ -28,7 +31,8 @@ inline double indexHistogramDistance(double squaredDistance, double h, double ph
 
 /// Expected count per element (theta(p) or phi(i)) when `total` items spread over `elements`
 /// elements in proportion to `weights` (a control map; evenly when empty).
-std::vector<double> expectedCounts(double total, std::size_t elements, const std::vector<float>& weights = {});
+std::vector<double> expectedCounts(double total, std::size_t elements,
+                                   const std::vector<float>& weights = {});
 
 /// Three per-channel histograms of RGB values in [0,1] with `bins` bins each, as counts.
 struct ChannelHistograms {
@@ -50,4 +54,4 @@ struct ChannelHistograms {
 /// Histograms of `count` interleaved RGB colours.
 ChannelHistograms channelHistograms(const float* rgb, std::size_t count, int bins);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

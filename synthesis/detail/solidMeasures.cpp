@@ -3,9 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/parallel_for.h>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <tbb/parallel_for.h>
 
 #include "common/Random.h"
 #include "common/srgb.h"
@@ -71,7 +71,7 @@ double meanPower(const std::vector<double>& squared, double gamma) {
   return squared.empty() ? 0.0 : sum / double(squared.size());
 }
 
-} // namespace
+}  // namespace
 
 SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const SliceMeasureOptions& options) {
   NeighborhoodShape shape{std::min({options.neighborhood, exemplar.width, exemplar.height})};
@@ -82,7 +82,8 @@ SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const Sli
   Eigen::MatrixXf axisQ(D, options.axisSamples);
   for (int s = 0; s < options.axisSamples; ++s) {
     const int axis = s % 3;
-    std::array<int, 3> c{int(uniformIndex(rng, v.n)), int(uniformIndex(rng, v.n)), int(uniformIndex(rng, v.n))};
+    std::array<int, 3> c{int(uniformIndex(rng, v.n)), int(uniformIndex(rng, v.n)),
+                         int(uniformIndex(rng, v.n))};
     gatherSliceNeighborhood(v, axis, c, shape, axisQ.col(s).data());
   }
 
@@ -94,18 +95,22 @@ SliceEnergy sliceEnergy(const WorkVolume& v, const RgbImage& exemplar, const Sli
     const Eigen::Vector3d origin(uniform01(rng) * v.n, uniform01(rng) * v.n, uniform01(rng) * v.n);
     float* out = obliqueQ.col(s).data();
     for (int j = shape.lo(); j <= shape.hi(); ++j)
-      for (int i = shape.lo(); i <= shape.hi(); ++i, out += 3) sampleTrilinear(v, origin + double(i) * R.col(0) + double(j) * R.col(1), out);
+      for (int i = shape.lo(); i <= shape.hi(); ++i, out += 3)
+        sampleTrilinear(v, origin + double(i) * R.col(0) + double(j) * R.col(1), out);
   }
 
-  const std::vector<double> axis = nearestSquaredDistances(axisQ, ex), oblique = nearestSquaredDistances(obliqueQ, ex);
-  return {meanPower(axis, kEnergyExponent), meanPower(oblique, kEnergyExponent), meanPower(axis, 2), meanPower(oblique, 2)};
+  const std::vector<double> axis = nearestSquaredDistances(axisQ, ex),
+                            oblique = nearestSquaredDistances(obliqueQ, ex);
+  return {meanPower(axis, kEnergyExponent), meanPower(oblique, kEnergyExponent), meanPower(axis, 2),
+          meanPower(oblique, 2)};
 }
 
 double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImage& exemplar, int bins) {
   const std::size_t cells = std::size_t(bins) * bins * bins;
   auto binOf = [&](const float* c) {
     std::size_t idx = 0;
-    for (int k = 0; k < 3; ++k) idx = idx * bins + std::size_t(std::clamp(int(c[k] * float(bins)), 0, bins - 1));
+    for (int k = 0; k < 3; ++k)
+      idx = idx * bins + std::size_t(std::clamp(int(c[k] * float(bins)), 0, bins - 1));
     return idx;
   };
   std::vector<double> a(cells, 0.0), b(cells, 0.0);
@@ -113,7 +118,9 @@ double colorHistogramDistance(const float* rgb, std::size_t count, const RgbImag
   const std::size_t pixels = std::size_t(exemplar.pixelCount());
   for (std::size_t i = 0; i < pixels; ++i) b[binOf(exemplar.data.data() + 3 * i)] += 1.0;
   double tv = 0;
-  for (std::size_t i = 0; i < cells; ++i) tv += std::abs(a[i] / double(std::max<std::size_t>(count, 1)) - b[i] / double(std::max<std::size_t>(pixels, 1)));
+  for (std::size_t i = 0; i < cells; ++i)
+    tv += std::abs(a[i] / double(std::max<std::size_t>(count, 1)) -
+                   b[i] / double(std::max<std::size_t>(pixels, 1)));
   return 0.5 * tv;
 }
 
@@ -154,9 +161,10 @@ WorkVolume srgbVolumeOf(const SolidVolume& volume, int exemplarWidth) {
   if (!volume.sourcePosition.empty()) {
     v.source.resize(v.count());
     for (std::size_t i = 0; i < v.count(); ++i)
-      v.source[i] = std::int32_t(std::lround(volume.sourcePosition[i][1])) * exemplarWidth + std::int32_t(std::lround(volume.sourcePosition[i][0]));
+      v.source[i] = std::int32_t(std::lround(volume.sourcePosition[i][1])) * exemplarWidth +
+                    std::int32_t(std::lround(volume.sourcePosition[i][0]));
   }
   return v;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -10,19 +10,20 @@
 namespace solidtex::synthesis {
 
 /// Slice energy, Kopf's and Chen and Wang's eq. 1: the mean over sampled slice neighbourhoods of
-/// ||s - e||^gamma, e the nearest exemplar neighbourhood (exact, full dimension), gamma = kEnergyExponent, the
-/// distance taken per component (RMS over the vector, colours sRGB in [0,1]) so that sizes compare.
-/// The squared form (gamma = 2: the mean squared distance per component) is kept beside it: it
-/// weighs a few bad seams far more than many near-exact copies, so it prefers a blend to copies.
+/// ||s - e||^gamma, e the nearest exemplar neighbourhood (exact, full dimension), gamma = kEnergyExponent,
+/// the distance taken per component (RMS over the vector, colours sRGB in [0,1]) so that sizes compare. The
+/// squared form (gamma = 2: the mean squared distance per component) is kept beside it: it weighs a few bad
+/// seams far more than many near-exact copies, so it prefers a blend to copies.
 struct SliceEnergy {
-  double axis = 0;            ///< on slices orthogonal to x, y and z
-  double oblique = 0;         ///< on randomly rotated planes (trilinear sampling, periodic)
-  double axisSquared = 0;     ///< the same neighbourhoods, gamma = 2
+  double axis = 0;         ///< on slices orthogonal to x, y and z
+  double oblique = 0;      ///< on randomly rotated planes (trilinear sampling, periodic)
+  double axisSquared = 0;  ///< the same neighbourhoods, gamma = 2
   double obliqueSquared = 0;
 };
 
 /// Measures the slice energy of a periodic sRGB volume against the exemplar. Deterministic.
-SliceEnergy sliceEnergy(const WorkVolume& srgbVolume, const RgbImage& exemplar, const SliceMeasureOptions& options = {});
+SliceEnergy sliceEnergy(const WorkVolume& srgbVolume, const RgbImage& exemplar,
+                        const SliceMeasureOptions& options = {});
 
 /// Total-variation distance (in [0,1]) between the joint RGB histograms (bins^3) of `count`
 /// interleaved sRGB colours and of the exemplar's pixels.
@@ -42,4 +43,4 @@ PositionHistogramStats positionHistogramStats(const std::vector<std::int32_t>& s
 /// present (exemplar pixel index y * exemplarWidth + x).
 WorkVolume srgbVolumeOf(const SolidVolume& volume, int exemplarWidth);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -73,7 +73,8 @@ WorkVolume upsampleColors(const WorkVolume& coarse) {
           for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx) {
               const float w = (dz ? fz : 1 - fz) * (dy ? fy : 1 - fy) * (dx ? fx : 1 - fx);
-              const float* c = coarse.at(coarse.index(coarse.wrap(x0 + dx), coarse.wrap(y0 + dy), coarse.wrap(z0 + dz)));
+              const float* c =
+                  coarse.at(coarse.index(coarse.wrap(x0 + dx), coarse.wrap(y0 + dy), coarse.wrap(z0 + dz)));
               for (int k = 0; k < 3; ++k) acc[k] += w * c[k];
             }
         std::copy(acc, acc + 3, v.at(v.index(x, y, z)));
@@ -83,4 +84,4 @@ WorkVolume upsampleColors(const WorkVolume& coarse) {
   return v;
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

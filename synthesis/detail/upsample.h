@@ -21,4 +21,4 @@ WorkVolume upsampleSources(const WorkVolume& coarse, int coarseExemplarWidth, co
 /// at integer coordinates, child 2x+d sits at coarse coordinate x + d/2 - 1/4). No sources.
 WorkVolume upsampleColors(const WorkVolume& coarse);
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

@@ -6,16 +6,17 @@
 
 namespace solidtex::synthesis {
 
-void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex, const SliceMatches& matches,
-                          const ChannelHistograms& exemplarHistogram, ChannelHistograms& volumeHistogram,
-                          const WeightedAverageSettings& settings) {
+void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex,
+                          const SliceMatches& matches, const ChannelHistograms& exemplarHistogram,
+                          ChannelHistograms& volumeHistogram, const WeightedAverageSettings& settings) {
   const int n = volume.n;
   const int W = exemplar.width;
   const double exponent = (settings.irlsExponent - 2.0) / 2.0;
   const double eps = settings.irlsEpsilon * ex.shape.dims();
   if (volume.source.size() != volume.count()) volume.source.assign(volume.count(), -1);
   std::vector<float> irls(matches.distance.size());
-  tbb::parallel_for(std::size_t(0), irls.size(), [&](std::size_t i) { irls[i] = float(std::pow(matches.distance[i] + eps, exponent)); });
+  tbb::parallel_for(std::size_t(0), irls.size(),
+                    [&](std::size_t i) { irls[i] = float(std::pow(matches.distance[i] + eps, exponent)); });
 
   const std::vector<float> before = volume.rgb;
   for (int batch = 0; batch < kParityBatches; ++batch) {
@@ -53,4 +54,4 @@ void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar, const Ex
   }
 }
 
-} // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis

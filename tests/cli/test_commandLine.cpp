@@ -14,11 +14,12 @@ TEST(VolumeCommandLine, DropsOutputsThreadsAndQuietInEverySpelling) {
   EXPECT_EQ(volumeCommandLine({"particles", "p.png", "-o", "a.vdb", "--threads", "2", "--report", "r.json",
                                "--preview", "dir", "--quiet", "--size", "32"}),
             "solidtex particles p.png --size 32");
-  EXPECT_EQ(volumeCommandLine({"particles", "p.png", "-oa.vdb", "--output=a.vdb", "--threads=8", "--report=r.json",
-                               "--size", "32"}),
+  EXPECT_EQ(volumeCommandLine({"particles", "p.png", "-oa.vdb", "--output=a.vdb", "--threads=8",
+                               "--report=r.json", "--size", "32"}),
             "solidtex particles p.png --size 32");
   EXPECT_EQ(volumeCommandLine({"analyze", "p.png", "--labels", "l.png"}), "solidtex analyze p.png");
-  EXPECT_EQ(volumeCommandLine({"compare", "p.png", "v.vdb", "--plot", "c.png"}), "solidtex compare p.png v.vdb");
+  EXPECT_EQ(volumeCommandLine({"compare", "p.png", "v.vdb", "--plot", "c.png"}),
+            "solidtex compare p.png v.vdb");
 }
 
 TEST(VolumeCommandLine, KeepsOptionsThatOnlyStartLikeADroppedOne) {

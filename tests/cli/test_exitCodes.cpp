@@ -42,7 +42,8 @@ std::string shellWord(const fs::path& path) { return "'" + path.string() + "'"; 
 Outcome runSolidtex(const std::string& arguments) {
   const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const fs::path out = scratch(test + ".stdout"), err = scratch(test + ".stderr");
-  const std::string command = shellWord(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + shellWord(out) + " 2>" + shellWord(err);
+  const std::string command =
+      shellWord(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + shellWord(out) + " 2>" + shellWord(err);
   const int status = std::system(command.c_str());
   Outcome outcome;
   outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -74,7 +75,7 @@ void expectRefused(const std::vector<std::string>& commandLines, int exitCode, c
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-} // namespace
+}  // namespace
 
 TEST(ExitCodes, HelpAndVersionSucceed) {
   const Outcome version = runSolidtex("--version");
@@ -99,10 +100,11 @@ TEST(ExitCodes, ACommandLineThatDoesNotParseIsTwoWithOneLine) {
 TEST(ExitCodes, AJobThatFailsIsOneWithOneLineAndNoOutput) {
   const fs::path dir = emptyFolder("fail");
   const std::string out = " -o " + shellWord(dir / "a.vdb") + " --report " + shellWord(dir / "r.json");
-  expectRefused({"particles " + shellWord(dir / "missing.png") + out, "particles " + kPhoto + out + " --size 1",
-                 "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
-                 "synthesize " + kPhoto + out + " --method none"},
-                1, dir);
+  expectRefused(
+      {"particles " + shellWord(dir / "missing.png") + out, "particles " + kPhoto + out + " --size 1",
+       "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
+       "synthesize " + kPhoto + out + " --method none"},
+      1, dir);
 }
 
 TEST(ExitCodes, ASolidRecordsItsCommandLineAndIsTheSameAtAnyThreadCount) {
@@ -110,8 +112,9 @@ TEST(ExitCodes, ASolidRecordsItsCommandLineAndIsTheSameAtAnyThreadCount) {
   std::string bytes[2];
   for (int threads : {1, 2}) {
     const fs::path volume = dir / ("t" + std::to_string(threads) + ".vdb");
-    const Outcome outcome = runSolidtex("particles " + kPhoto + " -o " + shellWord(volume) + " --size 24 --seed 5 --threads " +
-                                        std::to_string(threads) + " --quiet");
+    const Outcome outcome =
+        runSolidtex("particles " + kPhoto + " -o " + shellWord(volume) + " --size 24 --seed 5 --threads " +
+                    std::to_string(threads) + " --quiet");
     ASSERT_EQ(outcome.exitCode, 0);
     EXPECT_TRUE(outcome.errLines.empty());
     const auto solid = solidtex::readVdb(volume.string());

@@ -46,5 +46,5 @@ TEST(DistributionDistance, KsCriticalValueIsExceededOneTimeInTwenty) {
   EXPECT_DOUBLE_EQ(ksCritical95(0, 5), 1);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -47,5 +47,5 @@ TEST(Random, UniformDrawsStayInRangeAndCoverIt) {
   for (int c : counts) EXPECT_NEAR(c, n / 10, n / 100);  // 10 standard deviations is ~950
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

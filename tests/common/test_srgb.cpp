@@ -17,8 +17,8 @@ TEST(Srgb, MatchesTheStandardCurve) {
   EXPECT_FLOAT_EQ(srgbToLinear(0.0f), 0.0f);
   EXPECT_FLOAT_EQ(srgbToLinear(1.0f), 1.0f);
   EXPECT_NEAR(srgbToLinear(0.5f), 0.214041f, 1e-5f);
-  EXPECT_NEAR(srgbToLinear(0.04045f), 0.0031308f, 1e-6f); // where the linear toe meets the power curve
-  EXPECT_NEAR(linearToSrgb(0.18f), 0.461356f, 1e-5f);     // middle grey
+  EXPECT_NEAR(srgbToLinear(0.04045f), 0.0031308f, 1e-6f);  // where the linear toe meets the power curve
+  EXPECT_NEAR(linearToSrgb(0.18f), 0.461356f, 1e-5f);      // middle grey
 }
 
 TEST(Srgb, ClampsOutOfRangeValues) {
@@ -37,5 +37,5 @@ TEST(Srgb, IsMonotonic) {
   }
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

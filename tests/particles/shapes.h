@@ -29,8 +29,9 @@ inline std::vector<cv::Point> pixelContour(const std::vector<cv::Point>& outline
   cv::fillPoly(mask, std::vector{shifted}, cv::Scalar(255));
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
-  auto largest = std::max_element(contours.begin(), contours.end(),
-                                  [](const auto& a, const auto& b) { return cv::contourArea(a) < cv::contourArea(b); });
+  auto largest = std::max_element(contours.begin(), contours.end(), [](const auto& a, const auto& b) {
+    return cv::contourArea(a) < cv::contourArea(b);
+  });
   for (cv::Point& p : *largest) p += cv::Point(box.x - 2, box.y - 2);
   return *largest;
 }
@@ -39,7 +40,8 @@ inline std::vector<cv::Point> ellipseContour(double rx, double ry, cv::Point cen
   std::vector<cv::Point> outline;
   for (int i = 0; i < 720; ++i) {
     const double t = 2 * kPi * i / 720;
-    outline.emplace_back(int(std::lround(centre.x + rx * std::cos(t))), int(std::lround(centre.y + ry * std::sin(t))));
+    outline.emplace_back(int(std::lround(centre.x + rx * std::cos(t))),
+                         int(std::lround(centre.y + ry * std::sin(t))));
   }
   return pixelContour(outline);
 }
@@ -57,7 +59,8 @@ inline std::vector<cv::Point> gravelContour(Rng& rng, double radius) {
     const double t = 2 * kPi * i / 360;
     double r = radius;
     for (int h = 0; h < 5; ++h) r += radius * amplitude[h] * std::cos((h + 2) * t + phase[h]);
-    outline.emplace_back(int(std::lround(200 + r * std::cos(t))), int(std::lround(200 + stretch * r * std::sin(t))));
+    outline.emplace_back(int(std::lround(200 + r * std::cos(t))),
+                         int(std::lround(200 + stretch * r * std::sin(t))));
   }
   return pixelContour(outline);
 }
@@ -92,7 +95,9 @@ inline bool closedAndConsistent(const HullMesh& mesh) {
   for (const auto& t : mesh.triangles)
     for (int c = 0; c < 3; ++c)
       if (!edges.insert({t[std::size_t(c)], t[std::size_t((c + 1) % 3)]}).second) return false;
-  return std::all_of(edges.begin(), edges.end(), [&](const auto& e) { return edges.count({e.second, e.first}) == 1; });
+  return std::all_of(edges.begin(), edges.end(), [&](const auto& e) {
+    return edges.count({e.second, e.first}) == 1;
+  });
 }
 
 // The 6-connected piece holding the first particle voxel, as a count.
@@ -134,4 +139,4 @@ inline bool tightInBox(const VoxelShape& shape) {
          hi[2] == shape.dims.z - 1;
 }
 
-} // namespace solidtex::test
+}  // namespace solidtex::test

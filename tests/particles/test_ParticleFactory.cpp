@@ -78,7 +78,8 @@ TEST(ParticleFactory, MakesAboutTheRequestedBoxInOnePiece) {
     const ParticleSize size = factory.pickDepth(stats.sizePairs[i % stats.sizePairs.size()].width,
                                                 stats.sizePairs[i % stats.sizePairs.size()].height, rng);
     const VoxelShape shape = factory.make(size.width, size.height, size.depth, rng);
-    const int asked[3] = {size.width, size.height, size.depth}, sides[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
+    const int asked[3] = {size.width, size.height, size.depth},
+              sides[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
     for (int a = 0; a < 3; ++a) {
       EXPECT_LE(sides[a], asked[a]);
       EXPECT_GE(sides[a], std::max(1, int(0.85 * asked[a]) - 1));  // see Voxelize.EveryBoxIsTight...
@@ -98,5 +99,5 @@ TEST(ParticleFactory, RejectsBadOptionsAndContourlessPhotos) {
   EXPECT_THROW(ParticleFactory(ExemplarStats{}, {}), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

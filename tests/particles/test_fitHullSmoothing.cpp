@@ -39,7 +39,8 @@ TEST(SmoothHull, RoundsACubeIntoAClosedSurface) {
   EXPECT_TRUE(test::closedAndConsistent(round));
   EXPECT_GT(round.volume(), 0);
   // Scaled back to the same box, the rounded cube misses its corners and edges but keeps its faces.
-  const double filled = double(voxelize(round, Eigen::Matrix3d::Identity(), 40, 40, 40).voxelCount()) / (40 * 40 * 40);
+  const double filled =
+      double(voxelize(round, Eigen::Matrix3d::Identity(), 40, 40, 40).voxelCount()) / (40 * 40 * 40);
   EXPECT_LT(filled, 0.97);
   EXPECT_GT(filled, 0.75);
   EXPECT_EQ(smoothHull(cube, {0, 40}).vertices, cube.vertices);  // radius 0: the sharp hull
@@ -48,8 +49,10 @@ TEST(SmoothHull, RoundsACubeIntoAClosedSurface) {
 TEST(FitHullSmoothing, RoundPhotosGetRoundParticlesAndGravelKeepsItsEdges) {
   const ExemplarStats ellipses = withMasks(ellipseStats(40, 3));
   const ExemplarStats gravel = withMasks(test::gravelStats(40, 3));
-  const SmoothingFit round = fitHullSmoothing(ellipses, ParticleFactory(ellipses, {.shapes = 16, .seed = 1}), 1, 1, 1);
-  const SmoothingFit sharp = fitHullSmoothing(gravel, ParticleFactory(gravel, {.shapes = 16, .seed = 1}), 1, 1, 1);
+  const SmoothingFit round =
+      fitHullSmoothing(ellipses, ParticleFactory(ellipses, {.shapes = 16, .seed = 1}), 1, 1, 1);
+  const SmoothingFit sharp =
+      fitHullSmoothing(gravel, ParticleFactory(gravel, {.shapes = 16, .seed = 1}), 1, 1, 1);
   EXPECT_GE(round.radius, 0.08);
   EXPECT_LT(sharp.radius, round.radius);
 }
@@ -58,8 +61,9 @@ TEST(FitHullSmoothing, ParsesAutoOrARadius) {
   EXPECT_FALSE(parseSmoothing("auto").has_value());
   EXPECT_DOUBLE_EQ(*parseSmoothing("0.1"), 0.1);
   EXPECT_DOUBLE_EQ(*parseSmoothing("0"), 0);
-  for (const char* bad : {"", "abc", "0.6", "-0.1", "nan", "0.1x"}) EXPECT_THROW(parseSmoothing(bad), InputError) << bad;
+  for (const char* bad : {"", "abc", "0.6", "-0.1", "nan", "0.1x"})
+    EXPECT_THROW(parseSmoothing(bad), InputError) << bad;
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -28,7 +28,8 @@ std::vector<Eigen::Vector2d> discPolygon() {
   const int n = 48;
   const double r = 0.5 * std::sqrt(2 * kPi / n / std::sin(2 * kPi / n));
   std::vector<Eigen::Vector2d> polygon;
-  for (int i = 0; i < n; ++i) polygon.emplace_back(r * std::cos(2 * kPi * i / n), r * std::sin(2 * kPi * i / n));
+  for (int i = 0; i < n; ++i)
+    polygon.emplace_back(r * std::cos(2 * kPi * i / n), r * std::sin(2 * kPi * i / n));
   return polygon;
 }
 
@@ -65,7 +66,8 @@ TEST(VisualHull, DiscsFromRandomDirectionsBoundTheSphere) {
     Rng rng(seed);
     std::vector<Eigen::Matrix3d> rotations;
     for (int i = 0; i < 3; ++i) rotations.push_back(randomRotation(rng));
-    const HullMesh hull = visualHull(discViews(rotations, normalizeContour(test::ellipseContour(20, 20), 48)));
+    const HullMesh hull =
+        visualHull(discViews(rotations, normalizeContour(test::ellipseContour(20, 20), 48)));
     ASSERT_TRUE(test::closedAndConsistent(hull));
     double upper = 1;  // the local cube
     for (int a = 0; a < 3; ++a)
@@ -93,8 +95,8 @@ TEST(VisualHull, SquaresAlongTheAxesMakeTheCube) {
 TEST(VisualHull, SquareFromAnAngleCutsTheCube) {
   // A square seen along z, turned 45 degrees about z: the cube minus its four vertical edges' wedges.
   const double s = 0.5;
-  const std::vector<Eigen::Vector2d> diamond{{0, -s * std::sqrt(2.0)}, {s * std::sqrt(2.0), 0}, {0, s * std::sqrt(2.0)},
-                                             {-s * std::sqrt(2.0), 0}};
+  const std::vector<Eigen::Vector2d> diamond{
+      {0, -s * std::sqrt(2.0)}, {s * std::sqrt(2.0), 0}, {0, s * std::sqrt(2.0)}, {-s * std::sqrt(2.0), 0}};
   const HullMesh hull = visualHull({{diamond, lookAlong(2)}});
   // 1e-5: prism corners snap to multiples of 2^-16
   EXPECT_NEAR(hull.volume(), 1.0 - 4 * (0.5 * std::pow(1 - std::sqrt(2.0) / 2, 2)), 1e-5);
@@ -110,13 +112,14 @@ TEST(VisualHull, DisjointViewsGiveNoHull) {
 TEST(VisualHull, RejectsANonRotation) {
   const std::vector<Eigen::Vector2d> square{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
   EXPECT_THROW(visualHull({{square, 2 * Eigen::Matrix3d::Identity()}}), std::invalid_argument);
-  EXPECT_THROW(visualHull({{square, Eigen::Matrix3d(Eigen::Vector3d(1, 1, -1).asDiagonal())}}), std::invalid_argument);
+  EXPECT_THROW(visualHull({{square, Eigen::Matrix3d(Eigen::Vector3d(1, 1, -1).asDiagonal())}}),
+               std::invalid_argument);
 }
 
 TEST(VisualHull, NearlyTouchingPolygonStillMakesAValidHull) {
   // A slit from the top reaching within 1e-9 of the bottom edge: simple, but rounding the rotated
   // prism would make its walls cross unless the pinch is cut first.
-  const std::vector<Eigen::Vector2d> slit{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {0.01, 0.5},
+  const std::vector<Eigen::Vector2d> slit{{-0.5, -0.5},     {0.5, -0.5},  {0.5, 0.5}, {0.01, 0.5},
                                           {0, -0.5 + 1e-9}, {-0.01, 0.5}, {-0.5, 0.5}};
   Rng rng(4);
   for (int i = 0; i < 10; ++i) {
@@ -144,7 +147,7 @@ TEST(MakeSimplePolygon, CutsABowTieToItsLargerLoop) {
 }
 
 TEST(MakeSimplePolygon, CutsAPinchAndKeepsTheClearance) {
-  const std::vector<Eigen::Vector2d> slit{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {0.01, 0.5},
+  const std::vector<Eigen::Vector2d> slit{{-0.5, -0.5},     {0.5, -0.5},  {0.5, 0.5}, {0.01, 0.5},
                                           {0, -0.5 + 1e-9}, {-0.01, 0.5}, {-0.5, 0.5}};
   const auto simple = makeSimplePolygon(slit);
   EXPECT_NEAR(area(simple), 0.5 * (1 - 0.01), 0.01);  // one half of the square
@@ -158,7 +161,8 @@ TEST(MakeSimplePolygon, CutsAPinchAndKeepsTheClearance) {
 }
 
 TEST(MakeSimplePolygon, OrientsCounterClockwiseAndDropsDegenerateVertices) {
-  const std::vector<Eigen::Vector2d> clockwise{{0, 0}, {0, 1}, {0, 1}, {0.5, 1}, {1, 1}, {1, 0}, {1, -0.5}, {1, 0}};
+  const std::vector<Eigen::Vector2d> clockwise{{0, 0}, {0, 1}, {0, 1},    {0.5, 1},
+                                               {1, 1}, {1, 0}, {1, -0.5}, {1, 0}};
   const auto simple = makeSimplePolygon(clockwise);
   EXPECT_EQ(simple.size(), 4u);
   EXPECT_NEAR(area(simple), 1.0, 1e-12);
@@ -184,5 +188,5 @@ TEST(NormalizeContour, StretchesTheContourBoxToTheUnitSquare) {
   EXPECT_TRUE(normalizeContour({{0, 0}, {5, 0}, {9, 0}}, 24).empty());
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

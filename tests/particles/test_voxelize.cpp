@@ -29,7 +29,8 @@ HullMesh unitCube() {
 // Face layers that no voxel centre reached are cut off: a sharp tip of a gravel hull may miss a few
 // voxel centres in a row, but the tips hold little of a side.
 TEST(Voxelize, EveryBoxIsTightWithinTheAskedOneAndOnePiece) {
-  const int sizes[][3] = {{1, 1, 1}, {1, 3, 2}, {2, 2, 2}, {3, 17, 5}, {40, 10, 5}, {1, 30, 1}, {25, 25, 25}, {9, 60, 33}};
+  const int sizes[][3] = {{1, 1, 1},   {1, 3, 2},  {2, 2, 2},    {3, 17, 5},
+                          {40, 10, 5}, {1, 30, 1}, {25, 25, 25}, {9, 60, 33}};
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     const HullMesh hull = gravelHull(seed);
     ASSERT_FALSE(hull.triangles.empty());
@@ -42,7 +43,8 @@ TEST(Voxelize, EveryBoxIsTightWithinTheAskedOneAndOnePiece) {
         EXPECT_GE(sides[a], std::max(1, int(0.85 * s[a]) - 1));
       }
       ASSERT_EQ(shape.inside.size(), shape.dims.count());
-      EXPECT_TRUE(test::tightInBox(shape)) << "seed " << seed << " box " << s[0] << "x" << s[1] << "x" << s[2];
+      EXPECT_TRUE(test::tightInBox(shape))
+          << "seed " << seed << " box " << s[0] << "x" << s[1] << "x" << s[2];
       EXPECT_EQ(test::firstPieceSize(shape), shape.voxelCount()) << "seed " << seed;
     }
   }
@@ -74,14 +76,16 @@ TEST(Voxelize, CubeFillsItsBoxWhateverTheSize) {
 TEST(Voxelize, IsDeterministic) {
   const HullMesh hull = gravelHull(3);
   Rng a(5), b(5);
-  EXPECT_EQ(voxelize(hull, randomRotation(a), 20, 21, 22).inside, voxelize(hull, randomRotation(b), 20, 21, 22).inside);
+  EXPECT_EQ(voxelize(hull, randomRotation(a), 20, 21, 22).inside,
+            voxelize(hull, randomRotation(b), 20, 21, 22).inside);
 }
 
 TEST(Voxelize, RejectsBadSizesAndEmptyHulls) {
   const HullMesh cube = unitCube();
   EXPECT_THROW(voxelize(cube, Eigen::Matrix3d::Identity(), 0, 5, 5), std::invalid_argument);
   EXPECT_THROW(voxelize(cube, Eigen::Matrix3d::Identity(), 5, -1, 5), std::invalid_argument);
-  EXPECT_THROW(voxelize(cube, Eigen::Matrix3d::Identity(), 5, 5, kMaxParticleSide + 1), std::invalid_argument);
+  EXPECT_THROW(voxelize(cube, Eigen::Matrix3d::Identity(), 5, 5, kMaxParticleSide + 1),
+               std::invalid_argument);
   EXPECT_THROW(voxelize(HullMesh{}, Eigen::Matrix3d::Identity(), 5, 5, 5), std::invalid_argument);
 }
 
@@ -92,5 +96,5 @@ TEST(VoxelShape, BoundaryIsTheShell) {
   EXPECT_EQ(voxelize(cube, Eigen::Matrix3d::Identity(), 1, 1, 1).boundary(), (std::vector<Voxel>{{0, 0, 0}}));
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -8,12 +8,12 @@
 #include <set>
 
 #include "common/Error.h"
-#include "pipeline/jobSupport.h"
 #include "pipeline/compareJob.h"
+#include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
+#include "tests/scratchPath.h"
 #include "validation/sectionStatistics.h"
 #include "voxel/vdbIO.h"
-#include "tests/scratchPath.h"
 
 namespace solidtex {
 namespace {
@@ -119,7 +119,8 @@ TEST_P(ParticleSolidOfExemplar, GivesWholeParticlesAtThePhotosAreaFraction) {
   fs::remove(output);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bundled, ParticleSolidOfExemplar, testing::Values("smarties", "coins", "gravel", "leopard"));
+INSTANTIATE_TEST_SUITE_P(Bundled, ParticleSolidOfExemplar,
+                         testing::Values("smarties", "coins", "gravel", "leopard"));
 
 // Section sizing makes the solid's sections look more like the photo's particles than the paper's
 // box sizing does, at the same area fraction.
@@ -134,10 +135,12 @@ TEST(ParticleSolidJob, SectionSizingBringsSectionAreasCloserToThePhotos) {
     compare.photo = job.photo;
     compare.volume = output.string();
     comparison[sizing] = runCompare(compare);
-    EXPECT_NEAR(comparison[sizing]["volume_fraction"].get<double>(), comparison[sizing]["area_fraction"].get<double>(), 0.02);
+    EXPECT_NEAR(comparison[sizing]["volume_fraction"].get<double>(),
+                comparison[sizing]["area_fraction"].get<double>(), 0.02);
     fs::remove(output);
   }
-  EXPECT_LT(comparison[Sizing::Sections]["ks"].get<double>(), comparison[Sizing::Bbox]["ks"].get<double>() - 0.1);
+  EXPECT_LT(comparison[Sizing::Sections]["ks"].get<double>(),
+            comparison[Sizing::Bbox]["ks"].get<double>() - 0.1);
   EXPECT_LT(comparison[Sizing::Sections]["wasserstein1_over_mean"].get<double>(),
             comparison[Sizing::Bbox]["wasserstein1_over_mean"].get<double>());
 }
@@ -174,5 +177,5 @@ TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
   EXPECT_THROW(runParticleSolid(unwritable), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

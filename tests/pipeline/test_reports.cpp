@@ -68,5 +68,5 @@ TEST(Reports, ParticlesAndCompareReportsAreSnakeCase) {
   fs::remove(job.output);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

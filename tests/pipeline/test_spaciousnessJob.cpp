@@ -19,13 +19,15 @@ TEST(SpaciousnessJob, EachFieldKeepsItsPromiseOnAPhotosScene) {
   const auto& fields = r["fields"];
   for (const char* exact : {"edt", "brute"})
     EXPECT_EQ(fields[exact]["all_voxels"]["max_abs_error"].get<double>(), 0) << exact;
-  // Delaunay's at() is a bound from a sample of the surface: never above, at most a voxel (and the jitter) below.
+  // Delaunay's at() is a bound from a sample of the surface: never above, at most a voxel (and the jitter)
+  // below.
   EXPECT_LE(fields["delaunay"]["all_voxels"]["max_error"].get<double>(), 1e-4);
   EXPECT_LE(fields["delaunay"]["all_voxels"]["max_abs_error"].get<double>(), 1.02);
   // Discrete underestimates, by at most the share 1 - 1/sqrt(3) of the value.
   const double largest = r["largest_exact_empty_ball"].get<double>();
   EXPECT_LE(fields["discrete"]["all_voxels"]["mean_error"].get<double>(), 0);
-  EXPECT_LE(fields["discrete"]["all_voxels"]["max_abs_error"].get<double>(), largest * (1 - 1 / std::sqrt(3.0)) + 1e-4);
+  EXPECT_LE(fields["discrete"]["all_voxels"]["max_abs_error"].get<double>(),
+            largest * (1 - 1 / std::sqrt(3.0)) + 1e-4);
   // Circumsphere candidates exceed the exact value by at most the slack (one voxel), and the largest is
   // the largest empty ball within a voxel.
   EXPECT_LE(fields["delaunay"]["circumcentres"]["max_error"].get<double>(), 1 + 1e-4);
@@ -36,5 +38,5 @@ TEST(SpaciousnessJob, EachFieldKeepsItsPromiseOnAPhotosScene) {
     for (const auto& fit : fields[exact]["best_fit"]) EXPECT_TRUE(fit["agrees"].get<bool>()) << exact;
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -71,7 +71,9 @@ TEST_P(ReconstructionOfATruth, DefaultsMatchThePhotoAndTheTruthBetterThanThePape
 
 INSTANTIATE_TEST_SUITE_P(Ellipsoids, ReconstructionOfATruth,
                          testing::Values(TruthCase{"sparse", 0.2, 1}, TruthCase{"crowded", 0.3, 1}),
-                         [](const testing::TestParamInfo<TruthCase>& info) { return std::string(info.param.name); });
+                         [](const testing::TestParamInfo<TruthCase>& info) {
+                           return std::string(info.param.name);
+                         });
 
 TEST(TruthJob, RefusesAFolderItCannotCreate) {
   TruthJob job;
@@ -80,5 +82,5 @@ TEST(TruthJob, RefusesAFolderItCannotCreate) {
   EXPECT_THROW(runTruth(job), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -21,7 +21,8 @@ public:
   /// Adds a random ball or box (its free voxels only) and returns its voxels; empty when it lands
   /// entirely on occupied voxels.
   std::vector<Voxel> addRandomParticle(Rng& rng) {
-    const Voxel c{int(uniformIndex(rng, std::uint64_t(dims_.x))), int(uniformIndex(rng, std::uint64_t(dims_.y))),
+    const Voxel c{int(uniformIndex(rng, std::uint64_t(dims_.x))),
+                  int(uniformIndex(rng, std::uint64_t(dims_.y))),
                   int(uniformIndex(rng, std::uint64_t(dims_.z)))};
     const int r = 1 + int(uniformIndex(rng, 4));
     const bool ball = uniformIndex(rng, 2) == 0;
@@ -63,4 +64,4 @@ private:
   std::vector<std::uint8_t> occupied_;
 };
 
-} // namespace solidtex::test
+}  // namespace solidtex::test

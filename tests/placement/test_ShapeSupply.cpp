@@ -32,7 +32,7 @@ ParticleFactory factoryOf(const ExemplarStats& stats) {
   return ParticleFactory(stats, options);
 }
 
-} // namespace
+}  // namespace
 
 // Determinism across threads rests on this: the shapes a pair gets do not depend on which were made
 // ahead on another thread, kept for later or made on the spot.
@@ -75,4 +75,4 @@ TEST(ShapeSupply, ShapesAreMadeAtTheSupplysScale) {
   EXPECT_LT(double(b.fit.voxels.size()), 0.5 * double(a.fit.voxels.size()));
 }
 
-} // namespace solidtex::detail
+}  // namespace solidtex::detail

@@ -5,8 +5,8 @@
 #include <map>
 #include <numeric>
 
-#include <opencv2/imgproc.hpp>
 #include <tbb/global_control.h>
+#include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
 #include "placement/cropPlacement.h"
@@ -34,12 +34,16 @@ ExemplarStats discStats(const std::map<int, int>& discs, double areaFraction) {
       ++pairs[{p.box.width, p.box.height}];
       stats.particles.push_back(p);
     }
-  const auto [smallest, largest] = std::minmax_element(stats.particles.begin(), stats.particles.end(),
-                                                       [](const auto& a, const auto& b) { return a.area < b.area; });
-  for (int i = 0; i <= 10; ++i) stats.histogram.edges[std::size_t(i)] = smallest->area + (largest->area - smallest->area) * i / 10;
-  for (const Particle2D& p : stats.particles) ++stats.histogram.counts[std::size_t(stats.histogram.binOf(p.area))];
+  const auto [smallest, largest] =
+      std::minmax_element(stats.particles.begin(), stats.particles.end(),
+                          [](const auto& a, const auto& b) { return a.area < b.area; });
+  for (int i = 0; i <= 10; ++i)
+    stats.histogram.edges[std::size_t(i)] = smallest->area + (largest->area - smallest->area) * i / 10;
+  for (const Particle2D& p : stats.particles)
+    ++stats.histogram.counts[std::size_t(stats.histogram.binOf(p.area))];
   for (int i = 0; i < 10; ++i)
-    stats.histogram.ratios[std::size_t(i)] = double(stats.histogram.counts[std::size_t(i)]) / double(stats.particles.size());
+    stats.histogram.ratios[std::size_t(i)] =
+        double(stats.histogram.counts[std::size_t(i)]) / double(stats.particles.size());
   for (const auto& [size, count] : pairs) stats.sizePairs.push_back({size.first, size.second, count});
   stats.areaFraction = areaFraction;
   return stats;
@@ -159,8 +163,11 @@ TEST_P(PlaceLargestFirst, IsDeterministicForTheSeed) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, PlaceLargestFirst,
-                         testing::Values(PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay),
-                         [](const testing::TestParamInfo<PlacerKind>& info) { return placerName(info.param); });
+                         testing::Values(PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt,
+                                         PlacerKind::Delaunay),
+                         [](const testing::TestParamInfo<PlacerKind>& info) {
+                           return placerName(info.param);
+                         });
 
 TEST(PlaceLargestFirstHistogram, FollowsThePhotosProportions) {
   const ExemplarStats stats = discStats(kDiscs, 0.3);
@@ -168,7 +175,8 @@ TEST(PlaceLargestFirstHistogram, FollowsThePhotosProportions) {
   expectConsistent(r, stats);
   ASSERT_EQ(r.stopReason, "area fraction reached");
   for (int b = 0; b < 10; ++b)
-    EXPECT_NEAR(r.volumeHistogram[std::size_t(b)], stats.histogram.ratios[std::size_t(b)], 0.08) << "bin " << b;
+    EXPECT_NEAR(r.volumeHistogram[std::size_t(b)], stats.histogram.ratios[std::size_t(b)], 0.08)
+        << "bin " << b;
 }
 
 TEST(PlaceLargestFirstHistogram, PlacesLargestBinsFirst) {
@@ -298,5 +306,5 @@ TEST(PlaceLargestFirstOptions, ReportsProgressAndRejectsBadOptions) {
   EXPECT_THROW(placeLargestFirst(ExemplarStats{}, factory, *field, options), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -82,5 +82,5 @@ TEST(Sizing, ParsesNames) {
   EXPECT_THROW(parseSizing("volume"), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -13,7 +13,8 @@ namespace {
 
 using test::Scene;
 
-constexpr PlacerKind kAllKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay};
+constexpr PlacerKind kAllKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt,
+                                    PlacerKind::Delaunay};
 const Dims kDims{24, 28, 32};
 
 // What each kind promises against the exact spaciousness (capped at maxRadius).
@@ -23,7 +24,8 @@ void expectConsistent(PlacerKind kind, float value, double exact, float maxRadiu
   if (kind == PlacerKind::Discrete) {
     EXPECT_LE(value, capped + 1e-4);
     EXPECT_GE(value, capped / std::sqrt(3.0) - 1e-4);
-  } else if (kind == PlacerKind::Delaunay) {  // a sample of the surface, one voxel of slack, jittered vertices
+  } else if (kind ==
+             PlacerKind::Delaunay) {  // a sample of the surface, one voxel of slack, jittered vertices
     EXPECT_LE(value, capped + 1e-4);
     EXPECT_GE(value, capped - 1.02);
   } else {
@@ -48,8 +50,10 @@ TEST_P(FieldTest, EmptyVolumeHoldsTheWallDistance) {
   EXPECT_EQ(field->dims(), kDims);
   EXPECT_FLOAT_EQ(field->maxRadius(), 9.5f);
   const auto wallDistanceAt = [&](const Voxel& v, float exact) {
-    if (GetParam() == PlacerKind::Delaunay) expectConsistent(GetParam(), field->at(v), exact, 9.5f, v);  // a bound
-    else EXPECT_FLOAT_EQ(field->at(v), std::min(exact, 9.5f));
+    if (GetParam() == PlacerKind::Delaunay)
+      expectConsistent(GetParam(), field->at(v), exact, 9.5f, v);  // a bound
+    else
+      EXPECT_FLOAT_EQ(field->at(v), std::min(exact, 9.5f));
   };
   wallDistanceAt({0, 5, 7}, 1);
   wallDistanceAt({3, 27, 12}, 1);
@@ -119,7 +123,9 @@ TEST_P(FieldTest, RejectsVoxelsOutsideTheVolume) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, FieldTest, testing::ValuesIn(kAllKinds),
-                         [](const testing::TestParamInfo<PlacerKind>& info) { return placerName(info.param); });
+                         [](const testing::TestParamInfo<PlacerKind>& info) {
+                           return placerName(info.param);
+                         });
 
 // Where several voxels share the smallest value at least the radius, best fit must start there.
 TEST(BucketFields, BestFitStartsAtTheSmallestSufficientValue) {
@@ -172,9 +178,11 @@ TEST(ExactSpaciousness, MatchesBruteForceDistances) {
   const std::vector<double> exact = scene.exactField();
   for (const float cap : {3.5f, 100.0f}) {
     const std::vector<float> field = exactSpaciousness(kDims, ids, cap);
-    for (std::size_t i = 0; i < exact.size(); ++i) ASSERT_NEAR(field[i], std::min(exact[i], double(cap)), 1e-5) << i;
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      ASSERT_NEAR(field[i], std::min(exact[i], double(cap)), 1e-5) << i;
   }
-  EXPECT_FLOAT_EQ(exactSpaciousness(kDims, std::vector<std::int32_t>(kDims.count(), 0), 100)[kDims.index(0, 5, 7)], 1);
+  EXPECT_FLOAT_EQ(
+      exactSpaciousness(kDims, std::vector<std::int32_t>(kDims.count(), 0), 100)[kDims.index(0, 5, 7)], 1);
 }
 
 TEST(SpaciousnessField, ParsesPlacerNames) {
@@ -189,5 +197,5 @@ TEST(SpaciousnessField, RejectsAbsurdArguments) {
   EXPECT_THROW(makeSpaciousnessField(PlacerKind::Brute, {2048, 2048, 2048}, 3), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

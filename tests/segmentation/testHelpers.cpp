@@ -30,12 +30,13 @@ void putChunk(std::vector<unsigned char>& out, const char* type, const std::vect
   putU32(out, crc32(typed.data(), typed.size()));
 }
 
-} // namespace
+}  // namespace
 
 std::filesystem::path freshTempDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                    ("solidtex_seg_" + std::string(info->test_suite_name()) + "_" + info->name());
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) /
+      ("solidtex_seg_" + std::string(info->test_suite_name()) + "_" + info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -79,13 +80,13 @@ std::vector<unsigned char> pngHeaderClaiming(unsigned width, unsigned height) {
   std::vector<unsigned char> ihdr;
   putU32(ihdr, width);
   putU32(ihdr, height);
-  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0}); // 8-bit RGB, deflate, no filter, no interlace
+  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});  // 8-bit RGB, deflate, no filter, no interlace
   putChunk(png, "IHDR", ihdr);
-  putChunk(png, "IDAT", {0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01}); // an empty zlib stream
+  putChunk(png, "IDAT", {0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01});  // an empty zlib stream
   putChunk(png, "IEND", {});
   return png;
 }
 
 std::string dataPath(const std::string& relative) { return std::string(SOLIDTEX_DATA_DIR) + "/" + relative; }
 
-} // namespace solidtex::test
+}  // namespace solidtex::test

@@ -17,7 +17,8 @@ struct Disc {
 std::filesystem::path freshTempDir();
 
 // CV_32FC3 sRGB photo: flat background, filled discs, then Gaussian noise (fixed seed).
-cv::Mat discPhoto(cv::Size size, const cv::Vec3f& background, const std::vector<Disc>& discs, double noise = 0.0);
+cv::Mat discPhoto(cv::Size size, const cv::Vec3f& background, const std::vector<Disc>& discs,
+                  double noise = 0.0);
 
 // CV_8U mask of the discs (255 inside).
 cv::Mat discMask(cv::Size size, const std::vector<Disc>& discs);
@@ -30,4 +31,4 @@ std::vector<unsigned char> pngHeaderClaiming(unsigned width, unsigned height);
 
 std::string dataPath(const std::string& relative);
 
-} // namespace solidtex::test
+}  // namespace solidtex::test

@@ -3,15 +3,17 @@
 #include <gtest/gtest.h>
 
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/imageIO.h"
 #include "segmentation/detail/color.h"
 #include "segmentation/detail/separateBackground.h"
+#include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {
 namespace {
 
-ExemplarStats analyzeData(const std::string& name) { return analyzeExemplar(test::dataPath("particles/" + name), {}); }
+ExemplarStats analyzeData(const std::string& name) {
+  return analyzeExemplar(test::dataPath("particles/" + name), {});
+}
 
 int innerCount(const ExemplarStats& stats) {
   int n = 0;
@@ -42,7 +44,7 @@ TEST(SegmentationExemplars, GravelHundredsOfGrains) {
   const ExemplarStats stats = analyzeData("gravel.png");
   EXPECT_GT(stats.particles.size(), 400u);
   EXPECT_LT(stats.particles.size(), 1500u);
-  EXPECT_GT(stats.areaFraction, 0.45); // the grains, not the shadowed gaps, are the particles
+  EXPECT_GT(stats.areaFraction, 0.45);  // the grains, not the shadowed gaps, are the particles
   EXPECT_EQ(stats.name, "gravel.png");
   EXPECT_EQ(stats.imageWidth, 512);
 }
@@ -59,9 +61,9 @@ TEST(SegmentationExemplars, InvertedCoinsGiveTheBackground) {
   const cv::Mat linear = detail::srgbToLinear(loadPhoto(test::dataPath("particles/coins.png")));
   const cv::Mat coins = detail::separateBackground(linear, 12, false);
   const cv::Mat background = detail::separateBackground(linear, 12, true);
-  EXPECT_LT(cv::countNonZero(coins & background), int(0.01 * double(coins.total()))); // small specks differ
+  EXPECT_LT(cv::countNonZero(coins & background), int(0.01 * double(coins.total())));  // small specks differ
   EXPECT_GT(cv::countNonZero(coins | background), int(0.99 * double(coins.total())));
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -29,11 +29,12 @@ void expectInputError(const std::string& path, const std::string& fragment) {
 }
 
 template <typename T>
-void writeWithOiio(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type, const std::vector<T>& pixels) {
+void writeWithOiio(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type,
+                   const std::vector<T>& pixels) {
   auto out = OIIO::ImageOutput::create(path.string());
   ASSERT_TRUE(out);
   OIIO::ImageSpec spec(width, height, channels, type);
-  spec.attribute("oiio:UnassociatedAlpha", 1); // store the colour as given, not divided by alpha
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // store the colour as given, not divided by alpha
   ASSERT_TRUE(out->open(path.string(), spec));
   ASSERT_TRUE(out->write_image(type, pixels.data()));
   ASSERT_TRUE(out->close());
@@ -43,14 +44,16 @@ TEST(SegmentationImageIO, RoundTripsAnRgbImage) {
   const fs::path path = freshTempDir() / "rgb.png";
   cv::Mat rgb(10, 12, CV_8UC3);
   for (int y = 0; y < rgb.rows; ++y)
-    for (int x = 0; x < rgb.cols; ++x) rgb.at<cv::Vec3b>(y, x) = {uchar(20 * x), uchar(25 * y), uchar(7 * (x + y))};
+    for (int x = 0; x < rgb.cols; ++x)
+      rgb.at<cv::Vec3b>(y, x) = {uchar(20 * x), uchar(25 * y), uchar(7 * (x + y))};
   writeImage(path.string(), rgb);
   const cv::Mat loaded = loadPhoto(path.string());
   ASSERT_EQ(loaded.type(), CV_32FC3);
   ASSERT_EQ(loaded.size(), rgb.size());
   for (int y = 0; y < rgb.rows; ++y)
     for (int x = 0; x < rgb.cols; ++x)
-      for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(loaded.at<cv::Vec3f>(y, x)[c], rgb.at<cv::Vec3b>(y, x)[c] / 255.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_FLOAT_EQ(loaded.at<cv::Vec3f>(y, x)[c], rgb.at<cv::Vec3b>(y, x)[c] / 255.0f);
 }
 
 TEST(SegmentationImageIO, WritesFloatImagesRoundedToEightBits) {
@@ -72,7 +75,8 @@ TEST(SegmentationImageIO, LeavesNoTemporaryFileBehind) {
 
 TEST(SegmentationImageIO, RefusesAnUnwritablePath) {
   const fs::path dir = freshTempDir();
-  EXPECT_THROW(writeImage((dir / "missing" / "a.png").string(), cv::Mat(8, 8, CV_8UC3, cv::Scalar(0))), InputError);
+  EXPECT_THROW(writeImage((dir / "missing" / "a.png").string(), cv::Mat(8, 8, CV_8UC3, cv::Scalar(0))),
+               InputError);
   EXPECT_THROW(writeImage((dir / "b.png").string(), cv::Mat(8, 8, CV_16UC3, cv::Scalar(0))), InputError);
   EXPECT_TRUE(fs::is_empty(dir));
 }
@@ -92,7 +96,7 @@ TEST(SegmentationImageIO, ReadsSixteenBitAndDropsAlpha) {
     pixels[i] = 65535;
     pixels[i + 1] = 32768;
     pixels[i + 2] = 0;
-    pixels[i + 3] = 1000; // alpha: must not leak into the colour
+    pixels[i + 3] = 1000;  // alpha: must not leak into the colour
   }
   writeWithOiio(path, 8, 8, 4, OIIO::TypeDesc::UINT16, pixels);
   const cv::Mat loaded = loadPhoto(path.string());
@@ -125,7 +129,8 @@ TEST(SegmentationImageIO, TruncatedPngIsAnInputError) {
   const fs::path dir = freshTempDir();
   const fs::path whole = dir / "whole.png";
   cv::Mat noise(64, 64, CV_8UC3);
-  cv::RNG(7).fill(noise, cv::RNG::UNIFORM, 0, 256); // incompressible, so half the file really misses pixel data
+  cv::RNG(7).fill(noise, cv::RNG::UNIFORM, 0,
+                  256);  // incompressible, so half the file really misses pixel data
   writeImage(whole.string(), noise);
   std::vector<unsigned char> bytes = test::readBytes(whole);
   bytes.resize(bytes.size() / 2);
@@ -153,5 +158,5 @@ TEST(SegmentationImageIO, ReadsTheExemplars) {
   EXPECT_EQ(gravel.size(), cv::Size(512, 512));
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -15,8 +15,8 @@ namespace {
 using test::Disc;
 
 // Two separate discs and a touching pair: four 8-connected components, five bodies.
-const std::vector<Disc> kDiscs{{{40, 40}, 15, {}}, {{120, 50}, 20, {}}, {{70, 130}, 22, {}}, {{113, 130}, 22, {}},
-                               {{190, 120}, 10, {}}};
+const std::vector<Disc> kDiscs{
+    {{40, 40}, 15, {}}, {{120, 50}, 20, {}}, {{70, 130}, 22, {}}, {{113, 130}, 22, {}}, {{190, 120}, 10, {}}};
 
 cv::Mat noisePhoto(cv::Size size) {
   cv::Mat photo(size, CV_32FC3);
@@ -82,7 +82,7 @@ TEST_F(SegmentationMask, WithSplitCutsTouchingComponentsOnly) {
 }
 
 TEST_F(SegmentationMask, InvertTakesTheBlackPart) {
-  writeImage(path_, 255 - mask_); // black discs on white
+  writeImage(path_, 255 - mask_);  // black discs on white
   SegmentationOptions options = withMask(path_, false);
   options.invert = true;
   const ExemplarStats stats = analyzeExemplar(noisePhoto(size_), "noise", options);
@@ -103,5 +103,5 @@ TEST_F(SegmentationMask, MissingMaskFileIsAnInputError) {
   EXPECT_THROW(analyzeExemplar(noisePhoto(size_), "noise", withMask(path_ + ".gone.png", true)), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -34,7 +34,8 @@ Averages averageOverShifts(double a, double b, double angle) {
   Averages m;
   constexpr int kShifts = 24;
   for (int i = 0; i < kShifts; ++i) {
-    const RegionShape s = measureRegion(digitalEllipse(a, b, angle, {uniform01(rng) - 0.5, uniform01(rng) - 0.5}));
+    const RegionShape s =
+        measureRegion(digitalEllipse(a, b, angle, {uniform01(rng) - 0.5, uniform01(rng) - 0.5}));
     m.area += s.area / kShifts;
     m.perimeter += s.perimeter / kShifts;
     m.roundness += s.roundness / kShifts;
@@ -65,7 +66,8 @@ TEST(RegionShape, DigitalEllipsesMatchTheirAnalyticRoundness) {
     const Averages m = averageOverShifts(a, b, angle);
     const double p = ramanujanPerimeter(a, b);
     EXPECT_NEAR(m.perimeter / p, 1, 0.03) << a << ' ' << b;
-    EXPECT_NEAR(m.roundness, 4 * std::numbers::pi * std::numbers::pi * a * b / (p * p), 0.05) << a << ' ' << b;
+    EXPECT_NEAR(m.roundness, 4 * std::numbers::pi * std::numbers::pi * a * b / (p * p), 0.05)
+        << a << ' ' << b;
     EXPECT_GE(m.solidity, 0.95) << a << ' ' << b;
   }
 }
@@ -91,5 +93,5 @@ TEST(RegionShape, OnePixel) {
   EXPECT_GT(s.perimeter, 0);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

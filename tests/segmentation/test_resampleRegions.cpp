@@ -38,10 +38,12 @@ TEST(ResampleLabels, SeesWhatACoarserCameraSees) {
     double resampled = 0, direct = 0, resampledRound = 0, directRound = 0;
     const int n = 300;
     for (int i = 0; i < n; ++i) {
-      const double a = 3 + 5 * uniform01(rng), b = a * (0.5 + 0.5 * uniform01(rng)), angle = 3 * uniform01(rng);
+      const double a = 3 + 5 * uniform01(rng), b = a * (0.5 + 0.5 * uniform01(rng)),
+                   angle = 3 * uniform01(rng);
       const double cx = 20 + uniform01(rng), cy = 20 + uniform01(rng);
       cv::Mat labels;
-      cv::Mat(digitalEllipse({80, 80}, cx / factor, cy / factor, a / factor, b / factor, angle) / 255).convertTo(labels, CV_32S);
+      cv::Mat(digitalEllipse({80, 80}, cx / factor, cy / factor, a / factor, b / factor, angle) / 255)
+          .convertTo(labels, CV_32S);
       const RegionShape fine = shapeOf(resampleLabels(labels, factor) > 0);
       const RegionShape coarse = shapeOf(digitalEllipse({40, 40}, cx, cy, a, b, angle));
       resampled += fine.solidity / n;
@@ -54,5 +56,5 @@ TEST(ResampleLabels, SeesWhatACoarserCameraSees) {
   }
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

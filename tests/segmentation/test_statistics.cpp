@@ -39,8 +39,9 @@ ExemplarStats analyzeBlocks(const std::vector<Block>& blocks, cv::Size size, con
 const cv::Vec3f kGrey(0.5f, 0.5f, 0.5f), kRed(0.8f, 0.1f, 0.1f);
 
 TEST(SegmentationStatistics, HistogramAndSizePairsOfAHandMadeCase) {
-  const std::vector<Block> blocks{{{10, 10, 10, 10}, kRed},  {{40, 10, 10, 10}, kRed},  {{70, 10, 10, 20}, kRed},
-                                  {{10, 50, 20, 10}, kRed},  {{50, 50, 30, 30}, kRed},  {{0, 100, 40, 40}, kRed}};
+  const std::vector<Block> blocks{{{10, 10, 10, 10}, kRed}, {{40, 10, 10, 10}, kRed},
+                                  {{70, 10, 10, 20}, kRed}, {{10, 50, 20, 10}, kRed},
+                                  {{50, 50, 30, 30}, kRed}, {{0, 100, 40, 40}, kRed}};
   const ExemplarStats stats = analyzeBlocks(blocks, {120, 150}, kGrey);
   ASSERT_EQ(stats.particles.size(), 6u);
 
@@ -71,7 +72,8 @@ TEST(SegmentationStatistics, HistogramAndSizePairsOfAHandMadeCase) {
 
 TEST(SegmentationStatistics, IdsFollowTheBoxesRowByRow) {
   // The right block is higher, so it comes first even though it lies further right.
-  const ExemplarStats stats = analyzeBlocks({{{70, 10, 10, 10}, kRed}, {{10, 12, 10, 10}, kRed}}, {100, 60}, kGrey);
+  const ExemplarStats stats =
+      analyzeBlocks({{{70, 10, 10, 10}, kRed}, {{10, 12, 10, 10}, kRed}}, {100, 60}, kGrey);
   ASSERT_EQ(stats.particles.size(), 2u);
   EXPECT_EQ(stats.particles[0].id, 1);
   EXPECT_EQ(stats.particles[0].box, cv::Rect(70, 10, 10, 10));
@@ -105,19 +107,21 @@ TEST(SegmentationStatistics, ResidualIsColorMinusMeanInsideTheMask) {
   ASSERT_EQ(stats.particles.size(), 1u);
   const Particle2D& p = stats.particles[0];
   ASSERT_EQ(p.box, cv::Rect(20, 20, 30, 20));
-  EXPECT_GE(cv::countNonZero(p.mask), 30 * 20 - 4 * 4); // corners may be rounded off
+  EXPECT_GE(cv::countNonZero(p.mask), 30 * 20 - 4 * 4);  // corners may be rounded off
   for (int y = 0; y < p.box.height; ++y)
     for (int x = 0; x < p.box.width; ++x) {
       const cv::Vec3f pixel = photo.at<cv::Vec3f>(p.box.y + y, p.box.x + x);
       const cv::Vec3f r = p.residual.at<cv::Vec3f>(y, x);
       const bool inside = p.mask.at<uchar>(y, x) != 0;
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(inside ? r[c] + p.color[c] : r[c], inside ? srgbToLinear(pixel[c]) : 0.0f, 1e-5);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(inside ? r[c] + p.color[c] : r[c], inside ? srgbToLinear(pixel[c]) : 0.0f, 1e-5);
     }
   EXPECT_LT(std::abs(cv::mean(p.residual)[0]), 1e-6);
 }
 
 TEST(SegmentationStatistics, OnlyBorderParticlesStillGiveAHistogram) {
-  const ExemplarStats stats = analyzeBlocks({{{0, 0, 10, 10}, kRed}, {{70, 40, 10, 20}, kRed}}, {80, 60}, kGrey);
+  const ExemplarStats stats =
+      analyzeBlocks({{{0, 0, 10, 10}, kRed}, {{70, 40, 10, 20}, kRed}}, {80, 60}, kGrey);
   ASSERT_EQ(stats.particles.size(), 2u);
   EXPECT_TRUE(stats.particles[0].border && stats.particles[1].border);
   int total = 0;
@@ -129,14 +133,16 @@ TEST(SegmentationStatistics, OnlyBorderParticlesStillGiveAHistogram) {
 }
 
 TEST(SegmentationStatistics, StatisticalParticlesLeaveBorderOnesOutWhenOthersExist) {
-  const ExemplarStats stats = analyzeBlocks({{{0, 0, 10, 10}, kRed}, {{30, 20, 10, 10}, kRed}}, {80, 60}, kGrey);
+  const ExemplarStats stats =
+      analyzeBlocks({{{0, 0, 10, 10}, kRed}, {{30, 20, 10, 10}, kRed}}, {80, 60}, kGrey);
   ASSERT_EQ(stats.particles.size(), 2u);
   ASSERT_TRUE(stats.particles[0].border);
   EXPECT_EQ(statisticalParticles(stats.particles), (std::vector<std::size_t>{1}));
 }
 
 TEST(SegmentationStatistics, EqualAreasFillTheFirstBin) {
-  const ExemplarStats stats = analyzeBlocks({{{10, 10, 10, 10}, kRed}, {{30, 10, 10, 10}, kRed}}, {60, 40}, kGrey);
+  const ExemplarStats stats =
+      analyzeBlocks({{{10, 10, 10, 10}, kRed}, {{30, 10, 10, 10}, kRed}}, {60, 40}, kGrey);
   EXPECT_EQ(stats.histogram.counts[0], 2);
   for (int i = 1; i <= 10; ++i) EXPECT_GT(stats.histogram.edges[i], stats.histogram.edges[i - 1]);
 }
@@ -155,9 +161,11 @@ TEST(SegmentationStatistics, HolesBelongToTheParticleAroundThem) {
   SegmentationOptions options;
   options.maskPath = path;
   options.split = false;
-  const ExemplarStats stats = analyzeExemplar(cv::Mat(mask.size(), CV_32FC3, cv::Scalar(0.5, 0.5, 0.5)), "rings", options);
+  const ExemplarStats stats =
+      analyzeExemplar(cv::Mat(mask.size(), CV_32FC3, cv::Scalar(0.5, 0.5, 0.5)), "rings", options);
   ASSERT_EQ(stats.particles.size(), 3u);
-  cv::Mat disc = cv::Mat::zeros(mask.size(), CV_8UC1), inner = disc.clone(), outer = disc.clone(), ring = disc.clone();
+  cv::Mat disc = cv::Mat::zeros(mask.size(), CV_8UC1), inner = disc.clone(), outer = disc.clone(),
+          ring = disc.clone();
   cv::circle(disc, {60, 60}, 40, cv::Scalar(255), cv::FILLED);
   cv::circle(outer, {160, 60}, 40, cv::Scalar(255), cv::FILLED);
   cv::circle(ring, {160, 60}, 25, cv::Scalar(255), cv::FILLED);
@@ -182,5 +190,5 @@ TEST(SegmentationStatistics, BinOfClampsToTheTenBins) {
   EXPECT_EQ(h.binOf(1000), 9);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

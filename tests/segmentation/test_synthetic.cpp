@@ -28,8 +28,10 @@ std::vector<double> sortedAreas(const ExemplarStats& stats) {
 }
 
 TEST(SegmentationSynthetic, DiscAreasMatchTheirRadii) {
-  const std::vector<Disc> discs{{{70, 70}, 15, {0.7f, 0.1f, 0.1f}}, {{200, 90}, 20, {0.1f, 0.5f, 0.2f}},
-                                {{120, 200}, 30, {0.2f, 0.2f, 0.7f}}, {{300, 200}, 25, {0.3f, 0.2f, 0.1f}}};
+  const std::vector<Disc> discs{{{70, 70}, 15, {0.7f, 0.1f, 0.1f}},
+                                {{200, 90}, 20, {0.1f, 0.5f, 0.2f}},
+                                {{120, 200}, 30, {0.2f, 0.2f, 0.7f}},
+                                {{300, 200}, 25, {0.3f, 0.2f, 0.1f}}};
   const ExemplarStats stats = analyzeExemplar(discPhoto({400, 300}, kPaper, discs, 0.02), "discs", {});
   ASSERT_EQ(stats.particles.size(), discs.size());
   std::vector<double> expected;
@@ -42,7 +44,8 @@ TEST(SegmentationSynthetic, DiscAreasMatchTheirRadii) {
 
 TEST(SegmentationSynthetic, ParticleColorIsTheLinearMean) {
   const cv::Vec3f red(0.8f, 0.2f, 0.1f);
-  const ExemplarStats stats = analyzeExemplar(discPhoto({200, 160}, kPaper, {{{100, 80}, 30, red}}), "one", {});
+  const ExemplarStats stats =
+      analyzeExemplar(discPhoto({200, 160}, kPaper, {{{100, 80}, 30, red}}), "one", {});
   ASSERT_EQ(stats.particles.size(), 1u);
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(stats.particles[0].color[c], srgbToLinear(red[c]), 1e-3);
@@ -74,12 +77,17 @@ TEST(SegmentationSynthetic, ElongatedParticlesAreNotSplit) {
 }
 
 TEST(SegmentationSynthetic, FindsLightParticlesOnDarkAndDarkOnLight) {
-  const std::vector<Disc> light{{{60, 60}, 20, {0.9f, 0.9f, 0.9f}}, {{150, 70}, 22, {0.85f, 0.85f, 0.85f}},
+  const std::vector<Disc> light{{{60, 60}, 20, {0.9f, 0.9f, 0.9f}},
+                                {{150, 70}, 22, {0.85f, 0.85f, 0.85f}},
                                 {{100, 150}, 18, {0.9f, 0.9f, 0.9f}}};
-  EXPECT_EQ(analyzeExemplar(discPhoto({220, 200}, {0.15f, 0.15f, 0.15f}, light, 0.02), "light", {}).particles.size(), 3u);
+  EXPECT_EQ(analyzeExemplar(discPhoto({220, 200}, {0.15f, 0.15f, 0.15f}, light, 0.02), "light", {})
+                .particles.size(),
+            3u);
   std::vector<Disc> dark = light;
   for (Disc& d : dark) d.srgb = {0.1f, 0.1f, 0.1f};
-  EXPECT_EQ(analyzeExemplar(discPhoto({220, 200}, {0.8f, 0.8f, 0.8f}, dark, 0.02), "dark", {}).particles.size(), 3u);
+  EXPECT_EQ(
+      analyzeExemplar(discPhoto({220, 200}, {0.8f, 0.8f, 0.8f}, dark, 0.02), "dark", {}).particles.size(),
+      3u);
 }
 
 TEST(SegmentationSynthetic, DenselyPackedParticlesAreTheParticles) {
@@ -88,30 +96,36 @@ TEST(SegmentationSynthetic, DenselyPackedParticlesAreTheParticles) {
   std::vector<Disc> discs;
   for (int row = 0; row < 5; ++row)
     for (int col = 0; col < 6; ++col)
-      discs.push_back({{float(30 + 38 * col + (row % 2) * 19), float(30 + 34 * row)}, 20, {0.75f, 0.72f, 0.7f}});
-  const ExemplarStats stats = analyzeExemplar(discPhoto({270, 200}, {0.1f, 0.1f, 0.1f}, discs, 0.01), "packed", {});
+      discs.push_back(
+          {{float(30 + 38 * col + (row % 2) * 19), float(30 + 34 * row)}, 20, {0.75f, 0.72f, 0.7f}});
+  const ExemplarStats stats =
+      analyzeExemplar(discPhoto({270, 200}, {0.1f, 0.1f, 0.1f}, discs, 0.01), "packed", {});
   EXPECT_GT(stats.areaFraction, 0.5);
   EXPECT_EQ(stats.particles.size(), discs.size());
 }
 
 TEST(SegmentationSynthetic, UnevenLightingDoesNotHideParticles) {
-  const std::vector<Disc> discs{{{50, 50}, 18, {0.9f, 0.9f, 0.9f}},  {{250, 50}, 18, {0.9f, 0.9f, 0.9f}},
-                                {{50, 180}, 18, {0.9f, 0.9f, 0.9f}}, {{250, 180}, 18, {0.9f, 0.9f, 0.9f}},
+  const std::vector<Disc> discs{{{50, 50}, 18, {0.9f, 0.9f, 0.9f}},
+                                {{250, 50}, 18, {0.9f, 0.9f, 0.9f}},
+                                {{50, 180}, 18, {0.9f, 0.9f, 0.9f}},
+                                {{250, 180}, 18, {0.9f, 0.9f, 0.9f}},
                                 {{150, 115}, 18, {0.9f, 0.9f, 0.9f}}};
   cv::Mat photo = discPhoto({300, 230}, {0, 0, 0}, {}, 0);
   for (int y = 0; y < photo.rows; ++y)
     for (int x = 0; x < photo.cols; ++x) {
-      const float v = 0.1f + 0.45f * float(x + y) / float(photo.cols + photo.rows); // 0.1 .. 0.55
+      const float v = 0.1f + 0.45f * float(x + y) / float(photo.cols + photo.rows);  // 0.1 .. 0.55
       photo.at<cv::Vec3f>(y, x) = {v, v, v};
     }
-  for (const Disc& d : discs) cv::circle(photo, d.centre, int(d.radius), cv::Scalar(0.9, 0.9, 0.9), cv::FILLED);
+  for (const Disc& d : discs)
+    cv::circle(photo, d.centre, int(d.radius), cv::Scalar(0.9, 0.9, 0.9), cv::FILLED);
   const ExemplarStats stats = analyzeExemplar(photo, "ramp", {});
   ASSERT_EQ(stats.particles.size(), discs.size());
   for (const Particle2D& p : stats.particles) EXPECT_NEAR(p.area, CV_PI * 18 * 18, 0.05 * CV_PI * 18 * 18);
 }
 
 TEST(SegmentationSynthetic, BorderParticlesAreFlaggedAndLeftOutOfTheHistogram) {
-  const std::vector<Disc> discs{{{5, 80}, 20, {0.2f, 0.2f, 0.6f}}, {{100, 80}, 20, {0.2f, 0.2f, 0.6f}},
+  const std::vector<Disc> discs{{{5, 80}, 20, {0.2f, 0.2f, 0.6f}},
+                                {{100, 80}, 20, {0.2f, 0.2f, 0.6f}},
                                 {{170, 60}, 14, {0.2f, 0.2f, 0.6f}}};
   const ExemplarStats stats = analyzeExemplar(discPhoto({220, 160}, kPaper, discs), "border", {});
   ASSERT_EQ(stats.particles.size(), 3u);
@@ -136,7 +150,8 @@ TEST(SegmentationSynthetic, InvertSwapsTheClasses) {
   SegmentationOptions options;
   options.invert = true;
   options.split = false;
-  const ExemplarStats stats = analyzeExemplar(discPhoto({220, 180}, kPaper, discs, 0.01), "inverted", options);
+  const ExemplarStats stats =
+      analyzeExemplar(discPhoto({220, 180}, kPaper, discs, 0.01), "inverted", options);
   ASSERT_EQ(stats.particles.size(), 1u);
   EXPECT_TRUE(stats.particles[0].border);
   EXPECT_DOUBLE_EQ(stats.areaFraction, 1.0);
@@ -162,12 +177,15 @@ TEST(SegmentationSynthetic, FlatImageHasNoParticles) {
 }
 
 TEST(SegmentationSynthetic, FaintNoiseHasNoParticles) {
-  EXPECT_THROW(analyzeExemplar(discPhoto({120, 100}, {0.5f, 0.5f, 0.5f}, {}, 0.005), "noise", {}), InputError);
+  EXPECT_THROW(analyzeExemplar(discPhoto({120, 100}, {0.5f, 0.5f, 0.5f}, {}, 0.005), "noise", {}),
+               InputError);
 }
 
 TEST(SegmentationSynthetic, IsDeterministic) {
   std::vector<Disc> discs;
-  for (int i = 0; i < 12; ++i) discs.push_back({{float(30 + 45 * (i % 6)), float(40 + 60 * (i / 6))}, 12.0f + float(i % 4) * 3, {0.3f, 0.6f, 0.2f}});
+  for (int i = 0; i < 12; ++i)
+    discs.push_back(
+        {{float(30 + 45 * (i % 6)), float(40 + 60 * (i / 6))}, 12.0f + float(i % 4) * 3, {0.3f, 0.6f, 0.2f}});
   const cv::Mat photo = discPhoto({300, 200}, kPaper, discs, 0.03);
   const ExemplarStats a = analyzeExemplar(photo, "det", {});
   const ExemplarStats b = analyzeExemplar(photo, "det", {});
@@ -185,5 +203,5 @@ TEST(SegmentationSynthetic, RejectsWrongPhotoTypes) {
   EXPECT_THROW(analyzeExemplar(cv::Mat(4, 50, CV_32FC3, cv::Scalar(0)), "thin", {}), InputError);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

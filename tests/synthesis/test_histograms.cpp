@@ -13,10 +13,10 @@ TEST(Histograms, ColorWeightFollowsEquation3) {
 }
 
 TEST(Histograms, PositionWeightFollowsEquation4) {
-  EXPECT_DOUBLE_EQ(positionHistogramWeight(1.0, 5.0, 2.0), 0.25);   // H - theta = 3
-  EXPECT_DOUBLE_EQ(positionHistogramWeight(0.8, 1.0, 2.0), 0.8);    // under-used: kept
-  EXPECT_DOUBLE_EQ(positionHistogramWeight(0.8, 2.0, 2.0), 0.8);    // exactly even: kept
-  EXPECT_DOUBLE_EQ(positionHistogramWeight(3.0, 2.5, 2.0), 2.0);    // 3 / 1.5
+  EXPECT_DOUBLE_EQ(positionHistogramWeight(1.0, 5.0, 2.0), 0.25);  // H - theta = 3
+  EXPECT_DOUBLE_EQ(positionHistogramWeight(0.8, 1.0, 2.0), 0.8);   // under-used: kept
+  EXPECT_DOUBLE_EQ(positionHistogramWeight(0.8, 2.0, 2.0), 0.8);   // exactly even: kept
+  EXPECT_DOUBLE_EQ(positionHistogramWeight(3.0, 2.5, 2.0), 2.0);   // 3 / 1.5
 }
 
 TEST(Histograms, IndexDistanceFollowsEquations5And6) {

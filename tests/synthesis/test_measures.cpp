@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
+#include "TestImages.h"
 #include "synthesis/detail/ExemplarPyramid.h"
 #include "synthesis/detail/solidMeasures.h"
 #include "synthesis/detail/upsample.h"
-#include "TestImages.h"
 
 using namespace solidtex;
 using namespace solidtex::synthesis;

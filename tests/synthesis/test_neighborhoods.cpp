@@ -3,12 +3,12 @@
 #include <limits>
 #include <set>
 
+#include "TestImages.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
 #include "synthesis/detail/SliceMatches.h"
 #include "synthesis/detail/SliceNeighborhoods.h"
 #include "synthesis/detail/upsample.h"
-#include "TestImages.h"
 
 using namespace solidtex;
 using namespace solidtex::synthesis;
@@ -30,7 +30,7 @@ WorkVolume stackedVolume(const RgbImage& ex) {
   return v;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Neighborhoods, ExemplarNeighborhoodLayout) {
   const RgbImage ex = toRgbImage(test::randomImage(10, 9, 1));
@@ -101,18 +101,22 @@ TEST(Neighborhoods, ZSlicesOfAStackedVolumeMatchTheExemplarExactly) {
 
 /// Eq. 5-6 scores of every exemplar neighbourhood for the slice neighbourhood `id`, by brute force:
 /// the search must pick their minimum (ties: smaller id) whatever it prunes.
-int bruteForceBest(const WorkVolume& v, const ExemplarNeighborhoods& n, const SearchSettings& s, const SliceCentreGrid& grid,
-                   std::size_t id, const std::vector<std::int64_t>& hist, std::int32_t previous) {
+int bruteForceBest(const WorkVolume& v, const ExemplarNeighborhoods& n, const SearchSettings& s,
+                   const SliceCentreGrid& grid, std::size_t id, const std::vector<std::int64_t>& hist,
+                   std::int32_t previous) {
   std::vector<float> full(n.shape.dims());
   gatherSliceNeighborhood(v, grid.axisOf(id), grid.voxelOf(id), n.shape, full.data());
-  const Eigen::VectorXf y = n.pca.basis.transpose() * (Eigen::Map<const Eigen::VectorXf>(full.data(), full.size()) - n.pca.mean);
+  const Eigen::VectorXf y =
+      n.pca.basis.transpose() * (Eigen::Map<const Eigen::VectorXf>(full.data(), full.size()) - n.pca.mean);
   int best = -1;
   double bestScore = std::numeric_limits<double>::infinity();
   for (int m = 0; m < n.count(); ++m) {
     double d = 0;
-    for (int c = 0; c < n.reducedDims(); ++c) d += double(y[c] - n.reducedAt(m)[c]) * double(y[c] - n.reducedAt(m)[c]);
+    for (int c = 0; c < n.reducedDims(); ++c)
+      d += double(y[c] - n.reducedAt(m)[c]) * double(y[c] - n.reducedAt(m)[c]);
     const double h = s.histogramScale * (double(hist[m]) - (m == previous ? 1 : 0));
-    const double score = (1.0 + std::max(0.0, h - s.histogramScale * (*s.phi)[m])) * (d + s.distanceFloor * n.shape.dims());
+    const double score =
+        (1.0 + std::max(0.0, h - s.histogramScale * (*s.phi)[m])) * (d + s.distanceFloor * n.shape.dims());
     if (score < bestScore) bestScore = score, best = m;
   }
   return best;

@@ -22,13 +22,14 @@ Eigen::MatrixXf correlatedSamples(int D, int M, std::uint64_t seed) {
   return x;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Pca, FullRoundTripIsExact) {
   const Eigen::MatrixXf x = correlatedSamples(12, 300, 1);
   const Pca pca = fitPca(x, 12);
   ASSERT_EQ(pca.dims(), 12);
-  for (int m = 0; m < 300; m += 17) EXPECT_LT((pca.reconstruct(pca.project(x.col(m))) - x.col(m)).norm(), 1e-4f);
+  for (int m = 0; m < 300; m += 17)
+    EXPECT_LT((pca.reconstruct(pca.project(x.col(m))) - x.col(m)).norm(), 1e-4f);
   EXPECT_NEAR(pca.keptVariance(), 1.0, 1e-9);
 }
 

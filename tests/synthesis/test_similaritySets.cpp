@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
+#include "TestImages.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
 #include "synthesis/detail/KdTree.h"
 #include "synthesis/detail/SimilaritySets.h"
-#include "TestImages.h"
 
 using namespace solidtex;
 using namespace solidtex::synthesis;
@@ -13,7 +13,8 @@ namespace {
 
 float reducedDistance(const ExemplarNeighborhoods& n, int a, int b) {
   float s = 0;
-  for (int c = 0; c < n.reducedDims(); ++c) s += (n.reducedAt(a)[c] - n.reducedAt(b)[c]) * (n.reducedAt(a)[c] - n.reducedAt(b)[c]);
+  for (int c = 0; c < n.reducedDims(); ++c)
+    s += (n.reducedAt(a)[c] - n.reducedAt(b)[c]) * (n.reducedAt(a)[c] - n.reducedAt(b)[c]);
   return s;
 }
 
@@ -26,14 +27,15 @@ void expectSameSets(const ExemplarNeighborhoods& n, const SimilaritySets& a, con
     EXPECT_EQ(b.of(m)[0], m);
     for (int q = 0; q < a.k; ++q) {
       // Same distances in the same order; ids may differ only between exact ties.
-      EXPECT_NEAR(reducedDistance(n, m, a.of(m)[q]), reducedDistance(n, m, b.of(m)[q]), 1e-5f) << "m=" << m << " q=" << q;
+      EXPECT_NEAR(reducedDistance(n, m, a.of(m)[q]), reducedDistance(n, m, b.of(m)[q]), 1e-5f)
+          << "m=" << m << " q=" << q;
       differentIds += a.of(m)[q] != b.of(m)[q];
     }
   }
   EXPECT_LE(differentIds, a.count() * a.k / 100);
 }
 
-} // namespace
+}  // namespace
 
 TEST(SimilaritySets, MatchBruteForceNearestNeighbours) {
   const RgbImage image = toRgbImage(test::smoothImage(40, 36));
@@ -59,7 +61,8 @@ TEST(SimilaritySets, SetsAreSortedByDistance) {
   const ExemplarNeighborhoods n = buildExemplarNeighborhoods(image, NeighborhoodShape{4}, 6);
   const SimilaritySets sets = buildSimilaritySets(n, 6);
   for (int m = 0; m < sets.count(); ++m)
-    for (int q = 2; q < sets.k; ++q) EXPECT_LE(reducedDistance(n, m, sets.of(m)[q - 1]), reducedDistance(n, m, sets.of(m)[q]) + 1e-6f);
+    for (int q = 2; q < sets.k; ++q)
+      EXPECT_LE(reducedDistance(n, m, sets.of(m)[q - 1]), reducedDistance(n, m, sets.of(m)[q]) + 1e-6f);
 }
 
 TEST(KdTree, NearestMatchesBruteForce) {

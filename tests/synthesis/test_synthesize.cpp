@@ -3,10 +3,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "TestImages.h"
 #include "common/Error.h"
 #include "common/srgb.h"
 #include "synthesis/synthesizeSolid.h"
-#include "TestImages.h"
 
 using namespace solidtex;
 
@@ -24,7 +24,7 @@ SynthesisOptions smallOptions(Method method) {
   return o;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Synthesize, TwoColorDiscsKeepTheirColorsAndFractions) {
   const cv::Vec3f a{0.9f, 0.8f, 0.3f}, b{0.1f, 0.2f, 0.6f};
@@ -41,8 +41,10 @@ TEST(Synthesize, TwoColorDiscsKeepTheirColorsAndFractions) {
   const Rgb la = lin(a), lb = lin(b);
   std::size_t inB = 0, other = 0;
   for (const Rgb& c : r.volume.color) {
-    if (c == lb) ++inB;
-    else if (c != la) ++other;
+    if (c == lb)
+      ++inB;
+    else if (c != la)
+      ++other;
   }
   EXPECT_EQ(other, 0u);
   const double fraction = double(inB) / double(r.volume.color.size());

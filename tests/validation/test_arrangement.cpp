@@ -9,7 +9,9 @@
 namespace solidtex {
 namespace {
 
-double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
+double mean(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+}
 
 TEST(Arrangement, ALatticeFillsEveryWindowAlike) {
   cv::Mat labels = cv::Mat::zeros(240, 240, CV_32S);
@@ -24,7 +26,8 @@ TEST(Arrangement, ALatticeFillsEveryWindowAlike) {
   ASSERT_EQ(fractions.size(), 25u);
   EXPECT_NEAR(mean(fractions), 36.0 / 144.0, 1e-12);
   EXPECT_NEAR(standardDeviation(fractions), 0, 1e-12);
-  const std::vector<double> nn = nearestNeighbourDistances(centres, std::vector<bool>(centres.size(), true), labels.size());
+  const std::vector<double> nn =
+      nearestNeighbourDistances(centres, std::vector<bool>(centres.size(), true), labels.size());
   ASSERT_FALSE(nn.empty());
   for (double d : nn) EXPECT_NEAR(d, 12, 1e-9);
 }
@@ -50,7 +53,8 @@ TEST(Arrangement, NearestNeighboursOfAPoissonScatter) {
   const cv::Size image(400, 400);
   std::vector<cv::Point2d> centres(3000);
   for (auto& c : centres) c = {uniform01(rng) * image.width - 0.5, uniform01(rng) * image.height - 0.5};
-  const std::vector<double> nn = nearestNeighbourDistances(centres, std::vector<bool>(centres.size(), true), image);
+  const std::vector<double> nn =
+      nearestNeighbourDistances(centres, std::vector<bool>(centres.size(), true), image);
   const double lambda = double(centres.size()) / image.area();
   EXPECT_GT(nn.size(), 2500u);
   EXPECT_NEAR(mean(nn) * 2 * std::sqrt(lambda), 1, 0.05);
@@ -63,5 +67,5 @@ TEST(Arrangement, UncountedCentresAreNeighboursOnly) {
   EXPECT_DOUBLE_EQ(nn[0], 5);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -60,5 +60,5 @@ TEST(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds)
   }
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

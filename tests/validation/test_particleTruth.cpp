@@ -6,8 +6,8 @@
 #include <set>
 #include <tuple>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "common/Error.h"
 #include "common/Random.h"
@@ -21,7 +21,8 @@ namespace {
 ParticleTruthOptions smallTruth(TruthShape shape = TruthShape::Ellipsoid) {
   ParticleTruthOptions options;
   options.dims = {160, 160, 64};
-  options.classes = {{4, 0.2, 0.75, {0.92f, 0.55f, 0.16f}}, {4 * std::cbrt(10.0), 0.15, 0.25, {0.25f, 0.48f, 0.88f}}};
+  options.classes = {{4, 0.2, 0.75, {0.92f, 0.55f, 0.16f}},
+                     {4 * std::cbrt(10.0), 0.15, 0.25, {0.25f, 0.48f, 0.88f}}};
   options.shape = shape;
   options.seed = 3;
   return options;
@@ -60,8 +61,8 @@ std::vector<std::vector<Eigen::Vector3d>> particleVoxels(const ParticleTruth& t)
 
 struct Moments {
   Eigen::Vector3d mean;
-  Eigen::Matrix3d axes;        // columns: principal directions, smallest spread first
-  Eigen::Vector3d variances;   // ascending
+  Eigen::Matrix3d axes;       // columns: principal directions, smallest spread first
+  Eigen::Vector3d variances;  // ascending
 };
 
 Moments momentsOf(const std::vector<Eigen::Vector3d>& voxels) {
@@ -69,7 +70,8 @@ Moments momentsOf(const std::vector<Eigen::Vector3d>& voxels) {
   m.mean.setZero();
   for (const Eigen::Vector3d& p : voxels) m.mean += p / double(voxels.size());
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& p : voxels) covariance += (p - m.mean) * (p - m.mean).transpose() / double(voxels.size());
+  for (const Eigen::Vector3d& p : voxels)
+    covariance += (p - m.mean) * (p - m.mean).transpose() / double(voxels.size());
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   m.axes = solver.eigenvectors();
   m.variances = solver.eigenvalues();
@@ -134,7 +136,8 @@ TEST_P(ParticleTruthShapes, FillsTheAskedFractionWithParticlesThatNeverTouch) {
           for (int dj = -1; dj <= 1; ++dj)
             for (int di = -1; di <= 1; ++di) {
               const std::int32_t other =
-                  t.volume.particleId[d.index((i + di + d.x) % d.x, (j + dj + d.y) % d.y, (k + dk + d.z) % d.z)];
+                  t.volume
+                      .particleId[d.index((i + di + d.x) % d.x, (j + dj + d.y) % d.y, (k + dk + d.z) % d.z)];
               ASSERT_TRUE(other == 0 || other == id) << "particles " << id << " and " << other << " touch";
             }
       }
@@ -147,7 +150,8 @@ TEST_P(ParticleTruthShapes, ClassesHaveTheirSizesAndShares) {
   const ParticleTruthOptions options = smallTruth(GetParam());
   const ParticleTruth& t = truthOf(options);
   std::vector<double> small, large;
-  for (std::size_t p = 0; p < t.volumes.size(); ++p) (t.classOf[p] == 0 ? small : large).push_back(t.volumes[p]);
+  for (std::size_t p = 0; p < t.volumes.size(); ++p)
+    (t.classOf[p] == 0 ? small : large).push_back(t.volumes[p]);
   const auto sphere = [](double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; };
   EXPECT_NEAR(median(small) / sphere(options.classes[0].meanRadius), 1, 0.15);
   EXPECT_NEAR(median(large) / sphere(options.classes[1].meanRadius), 1, 0.15);
@@ -176,8 +180,11 @@ TEST_P(ParticleTruthShapes, PhotoIsTheMiddleSectionInClassColors) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, ParticleTruthShapes,
-                         testing::Values(TruthShape::Ellipsoid, TruthShape::Superellipsoid, TruthShape::Polytope),
-                         [](const testing::TestParamInfo<TruthShape>& info) { return truthShapeName(info.param); });
+                         testing::Values(TruthShape::Ellipsoid, TruthShape::Superellipsoid,
+                                         TruthShape::Polytope),
+                         [](const testing::TestParamInfo<TruthShape>& info) {
+                           return truthShapeName(info.param);
+                         });
 
 // Spheres flattened to 0.45: the square root of the smallest over the largest second moment of
 // each particle's voxels is its axis ratio.
@@ -197,10 +204,12 @@ TEST(ParticleTruth, FlattenSetsTheAxisRatio) {
 TEST(ParticleTruth, SuperellipsoidsAreBoxierThanEllipsoids) {
   const auto medianFill = [](TruthShape shape) {
     std::vector<double> fills;
-    for (const auto& voxels : particleVoxels(truthOf(shapeTruth(shape, 1.5, 1)))) fills.push_back(orientedBoxFill(voxels));
+    for (const auto& voxels : particleVoxels(truthOf(shapeTruth(shape, 1.5, 1))))
+      fills.push_back(orientedBoxFill(voxels));
     return median(fills);
   };
-  const double ellipsoid = medianFill(TruthShape::Ellipsoid), superellipsoid = medianFill(TruthShape::Superellipsoid);
+  const double ellipsoid = medianFill(TruthShape::Ellipsoid),
+               superellipsoid = medianFill(TruthShape::Superellipsoid);
   EXPECT_LT(ellipsoid, 0.55);
   EXPECT_GT(superellipsoid, ellipsoid + 0.12);
 }
@@ -213,7 +222,8 @@ TEST(ParticleTruth, PolytopesAreConvex) {
   for (int k = -6; k <= 6; ++k)
     for (int j = -6; j <= 6; ++j)
       for (int i = -6; i <= 17; ++i)
-        if (Eigen::Vector3d(i, j, k).norm() <= 6 || Eigen::Vector3d(i - 11, j, k).norm() <= 6) twoBalls.emplace_back(i, j, k);
+        if (Eigen::Vector3d(i, j, k).norm() <= 6 || Eigen::Vector3d(i - 11, j, k).norm() <= 6)
+          twoBalls.emplace_back(i, j, k);
   EXPECT_LT(chordShareInside(twoBalls, rng), 0.95);
   std::vector<double> shares;
   for (const auto& voxels : particleVoxels(truthOf(shapeTruth(TruthShape::Polytope, 1.25, 1))))
@@ -255,7 +265,9 @@ TEST(ParticleTruth, SameSeedSameTruth) {
 
 TEST(ParticleTruth, RefusesOptionsItCannotMeet) {
   const std::vector<void (*)(ParticleTruthOptions&)> absurd = {
-      [](ParticleTruthOptions& o) { o.classes[1].meanRadius = 30; },  // 60+ voxels long in a 64-voxel-deep volume
+      [](ParticleTruthOptions& o) {
+        o.classes[1].meanRadius = 30;
+      },  // 60+ voxels long in a 64-voxel-deep volume
       [](ParticleTruthOptions& o) { o.shape = TruthShape::Polytope, o.classes[1].meanRadius = 14; },
       [](ParticleTruthOptions& o) { o.volumeFraction = 0.7; },
       [](ParticleTruthOptions& o) { o.classes.clear(); },
@@ -266,7 +278,9 @@ TEST(ParticleTruth, RefusesOptionsItCannotMeet) {
       [](ParticleTruthOptions& o) { o.elongation = 5; },
       [](ParticleTruthOptions& o) { o.exponent = 0.5; },
       [](ParticleTruthOptions& o) { o.blur = -1; },
-      [](ParticleTruthOptions& o) { o.classes = {{1, 0, 1, {1, 1, 1}}}, o.dims = {1000, 1000, 1000}; },  // 5 x 10^7 particles
+      [](ParticleTruthOptions& o) {
+        o.classes = {{1, 0, 1, {1, 1, 1}}}, o.dims = {1000, 1000, 1000};
+      },  // 5 x 10^7 particles
   };
   for (std::size_t i = 0; i < absurd.size(); ++i) {
     ParticleTruthOptions options = smallTruth();
@@ -277,5 +291,5 @@ TEST(ParticleTruth, RefusesOptionsItCannotMeet) {
   EXPECT_EQ(parseTruthShape("polytope"), TruthShape::Polytope);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -9,10 +9,13 @@
 namespace solidtex {
 namespace {
 
-double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
+double mean(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+}
 
 double shareAbove(const std::vector<double>& v, double threshold) {
-  return double(std::count_if(v.begin(), v.end(), [&](double x) { return x > threshold; })) / double(v.size());
+  return double(std::count_if(v.begin(), v.end(), [&](double x) { return x > threshold; })) /
+         double(v.size());
 }
 
 // Cubes of edge 3 (three in four) and 12 at random non-overlapping places in a periodic 256^3
@@ -35,7 +38,8 @@ CutBlock cutBlock() {
     bool free = true;
     for (int z = 0; z < edge && free; ++z)
       for (int y = 0; y < edge && free; ++y)
-        for (int x = 0; x < edge && free; ++x) free = ids[whole.index((x0 + x) % n, (y0 + y) % n, (z0 + z) % n)] == 0;
+        for (int x = 0; x < edge && free; ++x)
+          free = ids[whole.index((x0 + x) % n, (y0 + y) % n, (z0 + z) % n)] == 0;
     if (!free) continue;
     block.volumes.push_back(double(edge) * edge * edge);
     for (int z = 0; z < edge; ++z)
@@ -46,7 +50,8 @@ CutBlock cutBlock() {
   block.ids.resize(block.dims.count());
   for (int z = 0; z < 128; ++z)
     for (int y = 0; y < 128; ++y)
-      for (int x = 0; x < 128; ++x) block.ids[block.dims.index(x, y, z)] = ids[whole.index(x + 64, y + 64, z + 64)];
+      for (int x = 0; x < 128; ++x)
+        block.ids[block.dims.index(x, y, z)] = ids[whole.index(x + 64, y + 64, z + 64)];
   return block;
 }
 
@@ -72,5 +77,5 @@ TEST(ParticleVolumes, ACutBlockGivesTheWholeSolidsDistribution) {
   EXPECT_NEAR(mean(estimate), mean(block.volumes), 0.08 * mean(block.volumes));
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -16,7 +16,8 @@ std::vector<std::int32_t> sphereVolume(const Dims& dims, double radius) {
   for (int k = 0; k < dims.z; ++k)
     for (int j = 0; j < dims.y; ++j)
       for (int i = 0; i < dims.x; ++i)
-        if ((i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c) <= radius * radius) ids[dims.index(i, j, k)] = 1;
+        if ((i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c) <= radius * radius)
+          ids[dims.index(i, j, k)] = 1;
   return ids;
 }
 
@@ -63,5 +64,5 @@ TEST(DistributionDistance, WassersteinOfAShiftIsTheShift) {
   EXPECT_DOUBLE_EQ(wasserstein1({2, 7}, {7, 2}), 0);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

@@ -34,5 +34,5 @@ TEST(Slice, ObliquePlaneStaysInsideAndIsOrthonormal) {
   for (int value : slice(dims, field, p, 0)) EXPECT_EQ(value, 1);  // no sample falls outside
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex

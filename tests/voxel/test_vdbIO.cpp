@@ -93,5 +93,5 @@ TEST(VdbIO, ReadingAMissingOrCorruptFileThrows) {
   fs::remove(path);
 }
 
-} // namespace
-} // namespace solidtex
+}  // namespace
+}  // namespace solidtex
