@@ -1,4 +1,4 @@
-// How the slice energy (eq. 1, gamma 0.8) ranks reference volumes, for issue 5:
+// How the slice energy (eq. 1, gamma 0.8) ranks reference volumes: does it prefer blur or flat colour?
 //   energy_diagnostics baselines SIZE EXEMPLAR.png...   uniform mean colour (and snapped to the nearest
 //                                                       exemplar pixel), i.i.d. random pixels (sharp and
 //                                                       blurred), the exemplar extruded along z
