@@ -1,5 +1,6 @@
-// Measures the continuous synthesis methods on exemplars: energy (axis/oblique), position coverage,
-// colour histogram distance, time, peak memory. Usage:
+// Measures the continuous synthesis methods on exemplars: coherence, completeness and patch distance
+// on axis and oblique slices (validation/continuousQuality.h), position coverage, colour histogram
+// distance, time, peak memory. Usage:
 //   synthesis_bench [--size N] [--methods chen-wang,kopf] [--iterations I] [--threads T] [--seed S]
 //                   [--report-dir DIR] [--slices DIR] EXEMPLAR.png...
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "pipeline/jobSupport.h"
 #include "pipeline/synthesizeJob.h"
 #include "synthesis/synthesizeSolid.h"
+#include "validation/continuousQuality.h"
 
 namespace {
 
@@ -51,6 +53,7 @@ void writeSlices(const solidtex::SolidVolume& v, const std::string& path) {
 
 int main(int argc, char** argv) {
   solidtex::SynthesisOptions base;
+  bool measure = true;
   std::vector<std::string> methods{"chen-wang", "kopf"};
   std::vector<std::string> exemplars;
   std::string reportDir, slicesDir;
@@ -77,7 +80,7 @@ int main(int argc, char** argv) {
     else if (a == "--slices")
       slicesDir = next();
     else if (a == "--no-measure")
-      base.measure = false;
+      measure = false;
     else if (a == "--no-color-histogram")
       base.colorHistogramMatching = false;
     else if (a == "--choice") {
@@ -105,8 +108,9 @@ int main(int argc, char** argv) {
     else
       exemplars.push_back(a);
   }
-  std::printf("%-12s %-9s %5s %8s %8s %10s %10s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size",
-              "E_axis", "E_obl", "E2_axis", "E2_obl", "coverage", "flatness", "colorTV", "time_s", "peakMiB");
+  std::printf("%-12s %-9s %5s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n", "exemplar", "method", "size",
+              "coh_ax", "com_ax", "coh_obl", "com_obl", "pd_ax", "pd_obl", "coverage", "colorTV", "time_s",
+              "peakMiB");
   for (const auto& path : exemplars) {
     cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
     if (bgr.empty()) {
@@ -123,15 +127,18 @@ int main(int argc, char** argv) {
       o.method = solidtex::parseMethod(m);
       o.exemplarName = name;
       const solidtex::SynthesisResult r = solidtex::synthesizeSolid(rgb, o);
-      const solidtex::SolidQuality q = r.statistics.quality.value_or(solidtex::SolidQuality{});
-      std::printf("%-12s %-9s %5d %8.4f %8.4f %10.5f %10.5f %8.3f %8.3f %8.3f %8.2f %8.0f\n", name.c_str(),
-                  m.c_str(), o.size, q.energyAxis, q.energyOblique, q.energyAxisSquared,
-                  q.energyObliqueSquared, q.positionCoverage, q.positionFlatness, q.colorHistogramDistance,
-                  r.statistics.synthesisSeconds, solidtex::peakMemoryMiB());
+      const double peak = solidtex::peakMemoryMiB();
+      const solidtex::ContinuousQuality q =
+          measure ? solidtex::measureContinuousSolid(r.volume, rgb) : solidtex::ContinuousQuality{};
+      const double coverage = q.positions ? q.positions->coverage : 0.0;
+      std::printf("%-12s %-9s %5d %8.4f %8.4f %8.4f %8.4f %8.4f %8.4f %8.3f %8.3f %8.2f %8.0f\n",
+                  name.c_str(), m.c_str(), o.size, q.axis.coherence, q.axis.completeness, q.oblique.coherence,
+                  q.oblique.completeness, q.axis.patchDistance, q.oblique.patchDistance, coverage,
+                  q.colorHistogramDistance, r.statistics.seconds, peak);
       std::fflush(stdout);
       if (!reportDir.empty())
         std::ofstream(reportDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".json")
-            << solidtex::synthesisReport(o, r.statistics).dump(2);
+            << solidtex::synthesisReport(o, r.statistics, measure ? &q : nullptr).dump(2);
       if (!slicesDir.empty())
         writeSlices(r.volume, slicesDir + "/" + name + "_" + m + "_" + std::to_string(o.size) + ".png");
     }

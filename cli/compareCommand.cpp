@@ -6,12 +6,43 @@
 
 namespace solidtex::cli {
 
+namespace {
+
+void printSimilarity(const char* name, const nlohmann::json& s) {
+  std::cout << name << ": coherence " << s["coherence"].get<double>() << ", completeness "
+            << s["completeness"].get<double>() << ", patch distance " << s["patch_distance"].get<double>()
+            << '\n';
+}
+
+void printContinuous(const nlohmann::json& q) {
+  printSimilarity("axis slices", q["axis"]);
+  printSimilarity("oblique slices", q["oblique"]);
+  if (!q.contains("reference")) return;
+  printSimilarity("reference photo", q["reference"]);
+  for (const char* kind : {"axis", "oblique"}) {
+    const nlohmann::json& r = q["ratio_to_reference"][kind];
+    std::cout << kind << " / reference: bidirectional similarity " << r["bidirectional_similarity"]
+              << ", patch distance " << r["patch_distance"] << '\n';
+  }
+}
+
+}  // namespace
+
 Action addCompareCommand(CLI::App& app) {
   auto job = std::make_shared<CompareJob>();
-  CLI::App* command = app.add_subcommand("compare", "Compare a particle solid's statistics with its photo");
-  command->add_option("photo", job->photo, "The photo the solid was made from")->required();
-  command->add_option("volume", job->volume, "The particle solid (.vdb)")
-      ->required()
+  auto mode = std::make_shared<std::string>("auto");
+  CLI::App* command = app.add_subcommand(
+      "compare",
+      "Compare a solid with its photo: a particle solid's statistics or a continuous solid's slices");
+  command->add_option("photo", job->photo, "The photo or exemplar the solid was made from")->required();
+  command->add_option("volume", job->volume, "The solid (.vdb)")->required()->check(CLI::ExistingFile);
+  command
+      ->add_option("--mode", *mode,
+                   "auto (particles when the .vdb has a particle_id grid), particles or continuous")
+      ->capture_default_str();
+  command
+      ->add_option("--reference", job->reference,
+                   "Continuous: a second photo of the material; every figure also as a ratio to its own")
       ->check(CLI::ExistingFile);
   command->add_option("--scale", job->voxelsPerPixel,
                       "Voxels per photo pixel (default: from the .vdb's metadata)");
@@ -23,17 +54,25 @@ Action addCompareCommand(CLI::App& app) {
       ->add_option("--oblique-planes", job->sections.obliquePlanes,
                    "Random oblique section planes (0-100000)")
       ->capture_default_str();
-  command->add_option("--seed", job->sections.seed, "Seed for the oblique planes")->capture_default_str();
+  command->add_option("--seed", job->sections.seed, "Seed for the planes and patches")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");
-  command->add_option("--plot", job->plot, "Write the histograms and CDFs as a PNG");
+  command->add_option("--plot", job->plot,
+                      "Write a PNG: particles, the histograms and CDFs; continuous, the exemplar, the "
+                      "reference and two slices side by side");
   command
       ->add_option(
           "--truth", job->truth,
           "The 3D truth the photo was cut from (.vdb, as `solidtex truth` writes): compare particle volumes")
       ->check(CLI::ExistingFile);
   addSegmentationOptions(*command, job->segmentation);
-  return [job] {
+  return [job, mode] {
+    job->mode = parseCompareMode(*mode);
+    job->quality.seed = job->sections.seed;
     const auto r = runCompare(*job);
+    if (r["mode"] == "continuous") {
+      printContinuous(r["quality"]);
+      return 0;
+    }
     std::cout << "area fraction " << r["area_fraction"].get<double>() << ", volume fraction "
               << r["volume_fraction"].get<double>() << ", sections "
               << r["section_area_fraction"].get<double>() << "; section areas vs photo: KS "

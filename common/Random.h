@@ -1,5 +1,7 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
 
 namespace solidtex {
@@ -30,6 +32,12 @@ inline double uniform01(Rng& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 /// Uniform integer in [0, n), n > 0, identical across standard libraries.
 inline std::uint64_t uniformIndex(Rng& rng, std::uint64_t n) {
   return std::uint64_t(uniform01(rng) * double(n));
+}
+
+/// A standard normal sample (Box-Muller), identical across standard libraries.
+inline double standardNormal(Rng& rng) {
+  const double u = 1 - uniform01(rng), v = uniform01(rng);  // u in (0,1]: log(u) is finite
+  return std::sqrt(-2 * std::log(u)) * std::cos(2 * std::numbers::pi * v);
 }
 
 }  // namespace solidtex

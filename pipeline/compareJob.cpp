@@ -4,13 +4,17 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <opencv2/imgproc.hpp>
+
 #include "common/Error.h"
 #include "common/distributionDistance.h"
 #include "pipeline/comparisonPlot.h"
+#include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
 #include "validation/compareSections.h"
 #include "validation/particleVolumes.h"
+#include "voxel/slice.h"
 #include "voxel/vdbIO.h"
 
 namespace solidtex {
@@ -95,18 +99,17 @@ int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
   return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
-}  // namespace
-
-nlohmann::json runCompare(const CompareJob& job) {
+nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume) {
+  if (job.reference)
+    throw InputError("--reference is for continuous solids; give --truth for particle solids");
   if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096)
     throw InputError("--axis-planes must be in [1, 4096]");
   if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000)
     throw InputError("--oblique-planes must be in [0, 100000]");
-  const cv::Mat photo = loadPhoto(job.photo);
-  const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
-  const SolidVolume volume = readVdb(job.volume);
   if (volume.particleId.empty())
     throw InputError(job.volume + " has no particle_id grid: not a particle solid");
+  const cv::Mat photo = loadPhoto(job.photo);
+  const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const double scale = scaleOf(job, volume);
 
   std::vector<double> photoAreas;
@@ -132,6 +135,7 @@ nlohmann::json runCompare(const CompareJob& job) {
                       shapes.solidSolidity};
   const double photoMean = mean(photoAreas);
   nlohmann::json report = {
+      {"mode", "particles"},
       {"photo", job.photo},
       {"volume", job.volume},
       {"voxels_per_pixel", scale},
@@ -154,6 +158,63 @@ nlohmann::json runCompare(const CompareJob& job) {
   if (job.truth)
     report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
   if (job.plot) writeImage(*job.plot, plotComparison(data, report));
+  return report;
+}
+
+// The exemplar, the reference, a middle axis slice and an oblique slice side by side, each scaled
+// to the same height.
+cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const SolidVolume& volume) {
+  const Eigen::Vector3d centre(0.5 * (volume.dims.x - 1), 0.5 * (volume.dims.y - 1),
+                               0.5 * (volume.dims.z - 1));
+  std::vector<cv::Mat> panels{exemplar};
+  if (!reference.empty()) panels.push_back(reference);
+  panels.push_back(colorSlice(volume, axisPlane(volume.dims, 2, volume.dims.z / 2)));
+  panels.push_back(colorSlice(volume, obliquePlane(volume.dims, Eigen::Vector3d(1, 2, 3), centre)));
+  const int height = std::max(256, exemplar.rows);
+  std::vector<cv::Mat> row;
+  for (const cv::Mat& panel : panels) {
+    cv::Mat scaled;
+    const double f = double(height) / panel.rows;
+    cv::resize(panel, scaled, cv::Size(std::max(1, int(std::lround(panel.cols * f))), height), 0, 0,
+               cv::INTER_NEAREST);
+    row.push_back(scaled);
+    row.push_back(cv::Mat(height, 8, CV_32FC3, cv::Scalar(1, 1, 1)));
+  }
+  row.pop_back();
+  cv::Mat out;
+  cv::hconcat(row, out);
+  return out;
+}
+
+nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volume) {
+  if (job.truth) throw InputError("--truth is for particle solids; give --reference for continuous solids");
+  const cv::Mat exemplar = loadPhoto(job.photo);
+  const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
+  const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
+  nlohmann::json report = {{"mode", "continuous"},
+                           {"exemplar", job.photo},
+                           {"volume", job.volume},
+                           {"dims", {volume.dims.x, volume.dims.y, volume.dims.z}},
+                           {"quality", continuousQualityJson(quality, job.quality)}};
+  if (job.reference) report["reference"] = *job.reference;
+  if (job.plot) writeImage(*job.plot, continuousPlot(exemplar, reference, volume));
+  return report;
+}
+
+}  // namespace
+
+CompareMode parseCompareMode(const std::string& name) {
+  if (name == "auto") return CompareMode::Auto;
+  if (name == "particles") return CompareMode::Particles;
+  if (name == "continuous") return CompareMode::Continuous;
+  throw InputError("unknown compare mode '" + name + "' (expected auto, particles or continuous)");
+}
+
+nlohmann::json runCompare(const CompareJob& job) {
+  const SolidVolume volume = readVdb(job.volume);
+  const bool particles =
+      job.mode == CompareMode::Particles || (job.mode == CompareMode::Auto && !volume.particleId.empty());
+  nlohmann::json report = particles ? compareParticles(job, volume) : compareContinuous(job, volume);
   if (job.report) writeJsonFile(*job.report, report);
   return report;
 }

@@ -5,20 +5,35 @@
 #include <nlohmann/json.hpp>
 
 #include "segmentation/analyzeExemplar.h"
+#include "validation/continuousQuality.h"
 #include "validation/sectionStatistics.h"
 
 namespace solidtex {
 
-/// `solidtex compare`: how well a particle solid's statistics match its photo.
+/// What `solidtex compare` measures.
+enum class CompareMode {
+  Auto,        ///< particles when the .vdb has a particle_id grid, continuous otherwise
+  Particles,   ///< section sizes, shapes and arrangement against the photo's particles
+  Continuous,  ///< slice patches against the exemplar's (validation/continuousQuality.h)
+};
+
+/// Parses "auto" / "particles" / "continuous"; throws InputError otherwise.
+CompareMode parseCompareMode(const std::string& name);
+
+/// `solidtex compare`: how well a solid matches its photo: a particle solid's statistics, or a
+/// continuous solid's slices.
 struct CompareJob {
-  std::string photo;
-  std::string volume;  ///< .vdb with a particle_id grid
+  std::string photo;   ///< the photo or exemplar the solid was made from
+  std::string volume;  ///< .vdb
+  CompareMode mode = CompareMode::Auto;
   SegmentationOptions segmentation;
   SectionOptions sections;
-  double voxelsPerPixel = 0;          ///< <= 0: read from the .vdb's metadata
-  std::optional<std::string> report;  ///< JSON
-  std::optional<std::string> plot;    ///< PNG
-  std::optional<std::string> truth;   ///< .vdb of the 3D truth the photo was cut from (`solidtex truth`)
+  double voxelsPerPixel = 0;             ///< <= 0: read from the .vdb's metadata
+  std::optional<std::string> report;     ///< JSON
+  std::optional<std::string> plot;       ///< PNG
+  std::optional<std::string> truth;      ///< .vdb of the 3D truth the photo was cut from (`solidtex truth`)
+  std::optional<std::string> reference;  ///< continuous: a second photo of the material, the reference level
+  ContinuousQualityOptions quality;      ///< continuous: how slices are measured
 };
 
 /// Runs the job, writes the requested files and returns the report.

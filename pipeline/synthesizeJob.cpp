@@ -6,6 +6,7 @@
 
 #include "Version.h"
 #include "common/Error.h"
+#include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
 #include "synthesis/synthesizeSolid.h"
@@ -14,7 +15,9 @@
 
 namespace solidtex {
 
-nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats) {
+nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatistics& stats,
+                               const ContinuousQuality* quality,
+                               const ContinuousQualityOptions& qualityOptions) {
   const LevelStatistics& finest = stats.levels.back();
   nlohmann::json report = {
       {"method", methodName(o.method)},
@@ -56,23 +59,8 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
                       {"seconds", level.seconds}});
   }
   report["level_reports"] = levels;
-  report["synthesis_seconds"] = stats.synthesisSeconds;
-  if (const auto& q = stats.quality) {
-    report["quality"] = {
-        {"energy_axis", q->energyAxis},
-        {"energy_oblique", q->energyOblique},
-        {"energy_exponent", kEnergyExponent},
-        {"energy_axis_squared", q->energyAxisSquared},
-        {"energy_oblique_squared", q->energyObliqueSquared},
-        {"energy_neighborhood", q->energyNeighborhood},
-        {"position_coverage", q->positionCoverage},
-        {"position_flatness", q->positionFlatness},
-        {"position_variation", q->positionVariation},
-        {"position_source", o.method == Method::ChenWang ? "copied pixel" : "dominant proposal"},
-        {"index_coverage", q->indexCoverage},
-        {"color_histogram_distance", q->colorHistogramDistance},
-        {"seconds", q->seconds}};
-  }
+  if (stats.indexCoverage) report["index_coverage"] = *stats.indexCoverage;
+  if (quality) report["quality"] = continuousQualityJson(*quality, qualityOptions);
   report["seconds"] = stats.seconds;
   return report;
 }
@@ -99,7 +87,14 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   result.volume.metadata["command_line"] = job.commandLine;
   result.volume.metadata["seed"] = std::to_string(options.seed);
   result.volume.metadata["exemplar"] = options.exemplarName;
-  nlohmann::json report = synthesisReport(options, result.statistics);
+  std::optional<ContinuousQuality> quality;
+  if (job.measure) {
+    progress.update("measuring the slices against the exemplar");
+    quality = measureContinuousSolid(result.volume, exemplar, {}, job.quality);
+    progress.done();
+  }
+  nlohmann::json report =
+      synthesisReport(options, result.statistics, quality ? &*quality : nullptr, job.quality);
   report["solidtex_version"] = SOLIDTEX_VERSION;
   report["command"] = "synthesize";
   report["outputs"] = {{"vdb", job.output}};

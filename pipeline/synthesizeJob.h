@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "synthesis/synthesizeSolid.h"
+#include "validation/continuousQuality.h"
 
 namespace solidtex {
 
@@ -17,11 +18,16 @@ struct SynthesizeJob {
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
   std::string commandLine;
-  bool progress = true;  ///< a progress line on stderr
+  bool progress = true;              ///< a progress line on stderr
+  bool measure = true;               ///< the report's `quality`
+  ContinuousQualityOptions quality;  ///< how it is measured
 };
 
-/// The report's settings and statistics of a synthesis (snake_case keys, as every report).
-nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics);
+/// The report's settings and statistics of a synthesis (snake_case keys, as every report), with the
+/// solid's quality when measured.
+nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics,
+                               const ContinuousQuality* quality = nullptr,
+                               const ContinuousQualityOptions& qualityOptions = {});
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesize(const SynthesizeJob& job);

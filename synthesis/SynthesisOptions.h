@@ -21,7 +21,7 @@ std::string methodName(Method method);
 Method parseMethod(const std::string& name);
 
 /// Kopf et al.'s r (Chen and Wang's gamma): the slice energy sums ||s - e||^r (eq. 1), which the
-/// IRLS weights ||s - e||^(r-2) minimise; the energy the report measures uses the same exponent.
+/// IRLS weights ||s - e||^(r-2) minimise.
 inline constexpr double kEnergyExponent = 0.8;
 
 /// How chen-wang's discrete solver picks the exemplar pixel a voxel copies among the proposals.
@@ -29,15 +29,6 @@ enum class ProposalChoice {
   NearestToAverage,  ///< the proposal nearest to their weighted average (Han et al., as the paper says)
   LargestVote,       ///< the pixel with the largest summed weight, so re-weighting acts on the choice
   ColorMode,         ///< the proposal whose colour gathers the largest weight in a Gaussian colour kernel
-};
-
-/// How the quality of a solid texture is measured (the report's `quality`).
-struct SliceMeasureOptions {
-  int neighborhood = 8;        ///< side of the compared square neighbourhoods
-  int axisSamples = 1536;      ///< slice neighbourhoods sampled on axis-aligned slices (a third per axis)
-  int obliqueSamples = 1536;   ///< slice neighbourhoods sampled on random oblique planes
-  std::uint64_t seed = 12345;  ///< where the samples lie
-  int histogramBins = 8;       ///< per channel, for the joint colour histogram
 };
 
 /// Options of synthesizeSolid; defaults follow the paper and the `solidtex synthesize` command.
@@ -78,8 +69,6 @@ struct SynthesisOptions {
   /// chen-wang re-weights with eq. 3 (colour histograms) besides eq. 4: without it a minority
   /// colour class erodes (two-colour discs: 0.10 instead of 0.30), see DiscreteHistograms.
   bool colorHistogramMatching = true;
-  bool measure = true;  ///< measure slice energies and histogram statistics (SynthesisStatistics::quality)
-  SliceMeasureOptions measureOptions;
 };
 
 }  // namespace solidtex

@@ -16,7 +16,6 @@
 #include "synthesis/detail/SliceMatches.h"
 #include "synthesis/detail/discreteSolve.h"
 #include "synthesis/detail/histograms.h"
-#include "synthesis/detail/solidMeasures.h"
 #include "synthesis/detail/upsample.h"
 #include "synthesis/detail/weightedAverageSolve.h"
 
@@ -241,28 +240,10 @@ SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, i
   return out;
 }
 
-SolidQuality measureQuality(const PyramidState& state, const RgbImage& finest,
-                            const SliceMeasureOptions& options) {
-  const auto start = Clock::now();
-  const SliceEnergy energy = sliceEnergy(state.volume, finest, options);
-  const PositionHistogramStats positions = positionHistogramStats(state.volume.source, finest.pixelCount());
-  std::int64_t usedIndices = 0;
-  for (std::int64_t h : state.indexHistogram) usedIndices += h > 0;
-  SolidQuality q;
-  q.energyAxis = energy.axis;
-  q.energyOblique = energy.oblique;
-  q.energyAxisSquared = energy.axisSquared;
-  q.energyObliqueSquared = energy.obliqueSquared;
-  q.energyNeighborhood = std::min({options.neighborhood, finest.width, finest.height});
-  q.positionCoverage = positions.coverage;
-  q.positionFlatness = positions.flatness;
-  q.positionVariation = positions.variation;
-  q.indexCoverage =
-      state.indexHistogram.empty() ? 0.0 : double(usedIndices) / double(state.indexHistogram.size());
-  q.colorHistogramDistance =
-      colorHistogramDistance(state.volume.rgb.data(), state.volume.count(), finest, options.histogramBins);
-  q.seconds = secondsSince(start);
-  return q;
+double indexCoverage(const PyramidState& state) {
+  std::int64_t used = 0;
+  for (std::int64_t h : state.indexHistogram) used += h > 0;
+  return double(used) / double(state.indexHistogram.size());
 }
 
 }  // namespace
@@ -284,8 +265,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   for (int l = 0; l < o.levels; ++l)
     stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], o, state));
   result.volume = solidVolumeOf(state.volume, o, finest.width);
-  stats.synthesisSeconds = secondsSince(start);
-  if (o.measure) stats.quality = measureQuality(state, finest, o.measureOptions);
+  if (o.method == Method::ChenWang) stats.indexCoverage = indexCoverage(state);
   stats.seconds = secondsSince(start);
   return result;
 }

@@ -39,27 +39,12 @@ struct LevelStatistics {
   double seconds = 0;
 };
 
-/// How the finished solid's slices compare with the exemplar (SynthesisOptions::measure).
-struct SolidQuality {
-  double energyAxis = 0;         ///< slice energy (eq. 1, exponent kEnergyExponent) on axis slices
-  double energyOblique = 0;      ///< the same on random oblique planes
-  double energyAxisSquared = 0;  ///< exponent 2
-  double energyObliqueSquared = 0;
-  int energyNeighborhood = 0;         ///< side of the compared neighbourhoods
-  double positionCoverage = 0;        ///< share of exemplar pixels some voxel copies
-  double positionFlatness = 0;        ///< normalised entropy of voxels per exemplar pixel (1 = even)
-  double positionVariation = 0;       ///< their coefficient of variation
-  double indexCoverage = 0;           ///< share of exemplar neighbourhoods matched at the finest level
-  double colorHistogramDistance = 0;  ///< total variation between joint RGB histograms, in [0,1]
-  double seconds = 0;
-};
-
 /// What the synthesis did and how long it took.
 struct SynthesisStatistics {
   std::vector<int> neighborhoods;  ///< side per level, coarsest first
   std::vector<LevelStatistics> levels;
-  std::optional<SolidQuality> quality;
-  double synthesisSeconds = 0;  ///< without the quality measures
+  std::optional<double>
+      indexCoverage;  ///< chen-wang: share of exemplar neighbourhoods matched at the finest level
   double seconds = 0;
 };
 

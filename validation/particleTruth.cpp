@@ -21,11 +21,6 @@ constexpr std::size_t kMostParticles = 1'000'000;  // beyond this a truth takes 
 constexpr double kPolytopeReach = 1.3;
 constexpr double kUnitSphereVolume = 4.0 / 3.0 * std::numbers::pi;
 
-double gaussian(Rng& rng) {
-  const double u = 1 - uniform01(rng), v = uniform01(rng);  // u in (0,1]: log(u) is finite
-  return std::sqrt(-2 * std::log(u)) * std::cos(2 * std::numbers::pi * v);
-}
-
 // One particle to place: the semi-axes of its equal-volume ellipsoid, whatever its shape.
 struct Particle {
   int classIndex = 0;
@@ -64,7 +59,8 @@ std::vector<Particle> drawPopulation(const ParticleTruthOptions& options, Rng& r
       pick -= options.classes[std::size_t(p.classIndex++)].share;
     const ParticleClass& c = options.classes[std::size_t(p.classIndex)];
     // Two spreads at most: one freak size would dominate a small truth's volume distribution.
-    const double radius = c.meanRadius * std::exp(c.radiusSpread * std::clamp(gaussian(rng), -2.0, 2.0));
+    const double radius =
+        c.meanRadius * std::exp(c.radiusSpread * std::clamp(standardNormal(rng), -2.0, 2.0));
     p.semiAxes = radius * axisStretches(options, rng);
     filled += p.volume();
     population.push_back(p);
@@ -137,7 +133,7 @@ UnitShape polytope(Rng& rng) {
     for (int i = 0; i < count; ++i) {
       const double z = 1 - (2 * i + 1) / double(count), ring = std::sqrt(1 - z * z);
       const double angle = i * std::numbers::pi * (3 - std::sqrt(5.0));
-      const Eigen::Vector3d jitter(gaussian(rng), gaussian(rng), gaussian(rng));
+      const Eigen::Vector3d jitter(standardNormal(rng), standardNormal(rng), standardNormal(rng));
       vertices.push_back(
           (Eigen::Vector3d(ring * std::cos(angle), ring * std::sin(angle), z) + 0.25 * jitter).normalized());
     }
@@ -241,7 +237,7 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
     for (int i = 0; i < dims.x; ++i) {
       cv::Vec3f& c = photo.at<cv::Vec3f>(j, i);
       for (int ch = 0; ch < 3; ++ch)
-        c[ch] = std::clamp(float(c[ch] + options.noise * gaussian(rng)), 0.f, 1.f);
+        c[ch] = std::clamp(float(c[ch] + options.noise * standardNormal(rng)), 0.f, 1.f);
     }
   return photo;
 }

@@ -50,7 +50,7 @@ TEST(Reports, SynthesizeReportIsSnakeCaseWithLevelsAndMemory) {
   ASSERT_EQ(report["level_reports"].size(), 2u);
   EXPECT_EQ(report["level_reports"][1]["volume_size"], 16);
   EXPECT_GT(report["peak_memory_mib"].get<double>(), 0.0);
-  EXPECT_TRUE(report["quality"].contains("energy_axis"));
+  EXPECT_TRUE(report["quality"]["axis"].contains("completeness"));
   fs::remove(job.output);
 }
 

@@ -1,0 +1,14 @@
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "validation/continuousQuality.h"
+
+namespace solidtex {
+
+/// The report's `quality` of a continuous solid: coherence, completeness, their sum and the patch
+/// distance on axis and oblique slices, and with a reference photo its figures and the solid's as
+/// ratios to them (1 = as close to the exemplar as the second photo).
+nlohmann::json continuousQualityJson(const ContinuousQuality& quality,
+                                     const ContinuousQualityOptions& options);
+
+}  // namespace solidtex
