@@ -15,10 +15,18 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
       app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
   command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR)")->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
-  command->add_option("--method", *method, "chen-wang (histogram matching) or kopf (baseline)")
+  command
+      ->add_option(
+          "--method", *method,
+          "chen-wang (histogram matching), kopf (baseline) or skeletal (chen-wang on the Haar skeleton, "
+          "finer levels rebuilt from wavelet details)")
       ->capture_default_str();
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
   command->add_option("--levels", o.levels, "Multi-resolution levels (1-8)")->capture_default_str();
+  command
+      ->add_option("--wavelet-levels", o.waveletLevels,
+                   "skeletal: finest levels rebuilt from Haar details instead of optimised (below --levels)")
+      ->capture_default_str();
   command->add_option("--neighborhoods", o.neighborhoods, "Neighbourhood side per level, coarsest first")
       ->delimiter(',')
       ->capture_default_str();

@@ -31,7 +31,8 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
       {"control", bool(o.control)},
       {"exemplar",
        {{"name", o.exemplarName}, {"width", finest.exemplarWidth}, {"height", finest.exemplarHeight}}}};
-  if (o.method == Method::ChenWang) report["color_histogram_matching"] = o.colorHistogramMatching;
+  if (o.method != Method::Kopf) report["color_histogram_matching"] = o.colorHistogramMatching;
+  if (o.method == Method::Skeletal) report["wavelet_levels"] = o.waveletLevels;
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < stats.levels.size(); ++l) {
     const LevelStatistics& level = stats.levels[l];
@@ -60,6 +61,7 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
   }
   report["level_reports"] = levels;
   if (stats.indexCoverage) report["index_coverage"] = *stats.indexCoverage;
+  if (stats.rebuildSeconds) report["rebuild_seconds"] = *stats.rebuildSeconds;
   if (quality) report["quality"] = continuousQualityJson(*quality, qualityOptions);
   report["seconds"] = stats.seconds;
   return report;

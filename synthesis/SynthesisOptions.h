@@ -13,11 +13,13 @@ namespace solidtex {
 enum class Method {
   ChenWang,  ///< Chen & Wang 2010: discrete solver, k-coherence, position and index histogram matching
   Kopf,      ///< Kopf et al. 2007: IRLS weighted average, colour histogram matching (baseline)
+  Skeletal,  ///< Pan et al.: chen-wang on the exemplar's Haar skeleton, finer levels rebuilt from the
+             ///< detail coefficients of the copied pixels
 };
 
-/// "chen-wang" or "kopf".
+/// "chen-wang", "kopf" or "skeletal".
 std::string methodName(Method method);
-/// Parses "chen-wang" / "kopf"; throws InputError otherwise.
+/// Parses "chen-wang" / "kopf" / "skeletal"; throws InputError otherwise.
 Method parseMethod(const std::string& name);
 
 /// Kopf et al.'s r (Chen and Wang's gamma): the slice energy sums ||s - e||^r (eq. 1), which the
@@ -36,6 +38,9 @@ struct SynthesisOptions {
   Method method = Method::ChenWang;
   int size = 64;   ///< output is size^3 voxels; size / 2^(levels-1) must be whole
   int levels = 3;  ///< multi-resolution levels, coarsest first
+  /// skeletal: how many of the finest levels are rebuilt from Haar details instead of optimised
+  /// (the paper uses 1); fewer than `levels`
+  int waveletLevels = 1;
   std::vector<int> neighborhoods{
       8, 6, 4};                    ///< neighbourhood side per level, coarsest first (one value: all levels)
   int k = 5;                       ///< k-coherence similarity set size

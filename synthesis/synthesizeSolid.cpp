@@ -1,6 +1,7 @@
 #include "synthesis/synthesizeSolid.h"
 
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <tbb/global_control.h>
@@ -11,11 +12,13 @@
 #include "common/srgb.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
+#include "synthesis/detail/HaarPyramid.h"
 #include "synthesis/detail/KdTree.h"
 #include "synthesis/detail/SimilaritySets.h"
 #include "synthesis/detail/SliceMatches.h"
 #include "synthesis/detail/discreteSolve.h"
 #include "synthesis/detail/histograms.h"
+#include "synthesis/detail/rebuildSkeletalSolid.h"
 #include "synthesis/detail/upsample.h"
 #include "synthesis/detail/weightedAverageSolve.h"
 
@@ -35,12 +38,22 @@ std::string searchName(NeighborhoodSearch search) {
   return "";
 }
 
-std::string methodName(Method method) { return method == Method::ChenWang ? "chen-wang" : "kopf"; }
+std::string methodName(Method method) {
+  switch (method) {
+    case Method::ChenWang:
+      return "chen-wang";
+    case Method::Kopf:
+      return "kopf";
+    case Method::Skeletal:
+      return "skeletal";
+  }
+  return "";
+}
 
 Method parseMethod(const std::string& name) {
-  if (name == "chen-wang") return Method::ChenWang;
-  if (name == "kopf") return Method::Kopf;
-  throw InputError("unknown synthesis method '" + name + "' (expected chen-wang or kopf)");
+  for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal})
+    if (name == methodName(m)) return m;
+  throw InputError("unknown synthesis method '" + name + "' (expected chen-wang, kopf or skeletal)");
 }
 
 namespace {
@@ -64,6 +77,10 @@ std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
   if (o.threads < 0) throw InputError("--threads must not be negative");
   if (o.sparseStep < 1 || o.coherenceRadius < 0 || o.histogramBins < 1)
     throw InputError("invalid synthesis tuning options");
+  if (o.method == Method::Skeletal && (o.waveletLevels < 1 || o.waveletLevels >= o.levels))
+    throw InputError("--wavelet-levels " + std::to_string(o.waveletLevels) +
+                     " must be at least 1 and below --levels " + std::to_string(o.levels) +
+                     ": the coarsest level is optimised");
   std::vector<int> n = o.neighborhoods;
   if (n.size() == 1) n.assign(o.levels, n[0]);
   if (int(n.size()) != o.levels)
@@ -139,7 +156,7 @@ void discreteStep(WorkVolume& volume, const RgbImage& ex, const ExemplarNeighbor
 LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neighborhood,
                                 const SynthesisOptions& o, PyramidState& state) {
   const auto levelStart = Clock::now();
-  const bool chenWang = o.method == Method::ChenWang;
+  const bool chenWang = o.method != Method::Kopf;  // skeletal optimises its skeleton by chen-wang
   const RgbImage& ex = pyramid.levels[l];
   const int N = o.size >> (o.levels - 1 - l);
   const NeighborhoodShape shape{neighborhood};
@@ -240,6 +257,18 @@ SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, i
   return out;
 }
 
+/// The values (one per pixel of a `width`-wide image) of the top-left width x height corner.
+std::vector<float> cropValues(const std::vector<float>& values, int fromWidth, int width, int height) {
+  if (values.empty()) return values;
+  std::vector<float> out;
+  out.reserve(std::size_t(width) * std::size_t(height));
+  for (int y = 0; y < height; ++y) {
+    const auto row = values.begin() + std::ptrdiff_t(y) * fromWidth;
+    out.insert(out.end(), row, row + width);
+  }
+  return out;
+}
+
 double indexCoverage(const PyramidState& state) {
   std::int64_t used = 0;
   for (std::int64_t h : state.indexHistogram) used += h > 0;
@@ -258,14 +287,35 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     threadLimit =
         std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
 
-  const RgbImage finest = toRgbImage(exemplarSrgb);
-  const std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
-  const ExemplarPyramid pyramid = buildExemplarPyramid(finest, o.levels, control);
+  // Skeletal synthesis optimises the coarser levels only and rebuilds the finer ones from the
+  // exemplar's Haar details.
+  const int rebuilt = o.method == Method::Skeletal ? o.waveletLevels : 0;
+  RgbImage finest = toRgbImage(exemplarSrgb);
+  std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
+  std::optional<HaarPyramid> haar;
+  if (rebuilt > 0) {
+    haar = buildHaarPyramid(finest, rebuilt);
+    control = cropValues(control, finest.width, haar->finest.width, haar->finest.height);
+    finest = haar->finest;
+  }
+  ExemplarPyramid pyramid = buildExemplarPyramid(finest, o.levels, control);
+  SynthesisOptions optimised = o;
+  optimised.levels = o.levels - rebuilt;
+  optimised.size = o.size >> rebuilt;
+  pyramid.levels.resize(std::size_t(optimised.levels));
+  pyramid.control.resize(std::size_t(optimised.levels));
+  stats.neighborhoods.resize(std::size_t(optimised.levels));
   PyramidState state;
-  for (int l = 0; l < o.levels; ++l)
-    stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], o, state));
-  result.volume = solidVolumeOf(state.volume, o, finest.width);
-  if (o.method == Method::ChenWang) stats.indexCoverage = indexCoverage(state);
+  for (int l = 0; l < optimised.levels; ++l)
+    stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], optimised, state));
+  if (o.method != Method::Kopf) stats.indexCoverage = indexCoverage(state);
+  if (haar) {
+    const auto rebuildStart = Clock::now();
+    if (o.progress) o.progress("skeletal: rebuilding " + std::to_string(o.size) + "^3 from the Haar details");
+    state.volume = rebuildSkeletalSolid(state.volume, *haar);
+    stats.rebuildSeconds = secondsSince(rebuildStart);
+  }
+  result.volume = solidVolumeOf(state.volume, o, pyramid.levels.back().width);
   stats.seconds = secondsSince(start);
   return result;
 }

@@ -41,10 +41,11 @@ struct LevelStatistics {
 
 /// What the synthesis did and how long it took.
 struct SynthesisStatistics {
-  std::vector<int> neighborhoods;  ///< side per level, coarsest first
-  std::vector<LevelStatistics> levels;
-  std::optional<double>
-      indexCoverage;  ///< chen-wang: share of exemplar neighbourhoods matched at the finest level
+  std::vector<int> neighborhoods;       ///< side per optimised level, coarsest first
+  std::vector<LevelStatistics> levels;  ///< the optimised levels (skeletal: all but the rebuilt ones)
+  /// chen-wang and skeletal: share of exemplar neighbourhoods matched at the finest optimised level
+  std::optional<double> indexCoverage;
+  std::optional<double> rebuildSeconds;  ///< skeletal: rebuilding the finer levels from Haar details
   double seconds = 0;
 };
 

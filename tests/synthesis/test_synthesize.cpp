@@ -65,9 +65,27 @@ TEST(Synthesize, TwoColorDiscFractionsMatchWithin5Percent) {
   EXPECT_NEAR(double(inB) / double(r.volume.color.size()), double(discPixels) / (64 * 64), 0.05);
 }
 
+// Skeletal voxels mix the three directions' rebuilt slices, so colours blend at the discs' edges: the
+// share of the disc colour is measured along the line between the two colours.
+TEST(Synthesize, SkeletalTwoColorDiscFractionsMatchWithin5Percent) {
+  const cv::Vec3f a{0.9f, 0.8f, 0.3f}, b{0.1f, 0.2f, 0.6f};
+  const cv::Mat ex = test::randomDiscs(64, 0.3, 21, a, b);
+  int discPixels = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) discPixels += ex.at<cv::Vec3f>(y, x) == b;
+  const SynthesisResult r = synthesizeSolid(ex, smallOptions(Method::Skeletal));
+  ASSERT_EQ(r.volume.color.size(), 32u * 32 * 32);
+  EXPECT_TRUE(r.volume.sourcePosition.empty());
+  double share = 0;
+  for (const Rgb& c : r.volume.color) share += (a[0] - linearToSrgb(c[0])) / (a[0] - b[0]);
+  EXPECT_NEAR(share / double(r.volume.color.size()), double(discPixels) / (64 * 64), 0.05);
+  ASSERT_TRUE(r.statistics.rebuildSeconds.has_value());
+  EXPECT_EQ(r.statistics.levels.size(), 1u);  // the finest of the two levels is rebuilt
+}
+
 TEST(Synthesize, SameSeedSameOutputWithOneAndTwoThreads) {
   const cv::Mat ex = test::smoothImage(40, 40);
-  for (Method m : {Method::ChenWang, Method::Kopf}) {
+  for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal}) {
     SynthesisOptions o = smallOptions(m);
     o.size = 16;
     o.neighborhoods = {6, 4};
@@ -181,6 +199,13 @@ TEST(Synthesize, BadInputThrowsInputError) {
   EXPECT_THROW(synthesizeSolid(ex, o), InputError);  // 4^3 coarsest volume < 8x8 neighbourhood
   EXPECT_THROW(synthesizeSolid(cv::Mat(), o), InputError);
   EXPECT_THROW(parseMethod("wavelet"), InputError);
+  o.size = 32;
+  o.method = Method::Skeletal;
+  o.waveletLevels = 3;
+  EXPECT_THROW(synthesizeSolid(ex, o), InputError);  // no level left to optimise
+  o.waveletLevels = 0;
+  EXPECT_THROW(synthesizeSolid(ex, o), InputError);
+  o.method = Method::ChenWang;
   try {
     o.size = 30;
     synthesizeSolid(ex, o);
