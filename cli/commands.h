@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,10 +17,14 @@ Action addAnalyzeCommand(CLI::App& app);
 Action addParticlesCommand(CLI::App& app, const std::string& commandLine);
 Action addCompareCommand(CLI::App& app);
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine);
+Action addSynthesize2dCommand(CLI::App& app);
 Action addSpaciousnessCommand(CLI::App& app);
 Action addTruthCommand(CLI::App& app);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
+
+/// --levels, --wavelet-levels, --neighborhoods: shared by synthesize and synthesize2d.
+void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods);
 
 }  // namespace solidtex::cli

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       {"particles", solidtex::cli::addParticlesCommand(app, commandLine)},
       {"compare", solidtex::cli::addCompareCommand(app)},
       {"synthesize", solidtex::cli::addSynthesizeCommand(app, commandLine)},
+      {"synthesize2d", solidtex::cli::addSynthesize2dCommand(app)},
       {"spaciousness", solidtex::cli::addSpaciousnessCommand(app)},
       {"truth", solidtex::cli::addTruthCommand(app)},
   };

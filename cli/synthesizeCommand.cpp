@@ -6,6 +6,17 @@
 
 namespace solidtex::cli {
 
+void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods) {
+  command.add_option("--levels", levels, "Multi-resolution levels (1-8)")->capture_default_str();
+  command
+      .add_option("--wavelet-levels", waveletLevels,
+                  "skeletal: finest levels rebuilt from Haar details instead of optimised (below --levels)")
+      ->capture_default_str();
+  command.add_option("--neighborhoods", neighborhoods, "Neighbourhood side per level, coarsest first")
+      ->delimiter(',')
+      ->capture_default_str();
+}
+
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   auto job = std::make_shared<SynthesizeJob>();
   job->commandLine = commandLine;
@@ -22,14 +33,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
           "finer levels rebuilt from wavelet details)")
       ->capture_default_str();
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
-  command->add_option("--levels", o.levels, "Multi-resolution levels (1-8)")->capture_default_str();
-  command
-      ->add_option("--wavelet-levels", o.waveletLevels,
-                   "skeletal: finest levels rebuilt from Haar details instead of optimised (below --levels)")
-      ->capture_default_str();
-  command->add_option("--neighborhoods", o.neighborhoods, "Neighbourhood side per level, coarsest first")
-      ->delimiter(',')
-      ->capture_default_str();
+  addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods);
   command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
   command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")

@@ -27,22 +27,43 @@ nlohmann::json ratiosJson(const PatchSimilarity& s, const PatchSimilarity& refer
           {"patch_distance", ratio(s.patchDistance, reference.patchDistance)}};
 }
 
+nlohmann::json header(const ContinuousQualityOptions& o) {
+  return {{"distance_units", "RMS per component, sRGB in [0, 1]"},
+          {"similarity_patch_side", o.similaritySide},
+          {"scales", o.scales}};
+}
+
+nlohmann::json referenceJson(const PatchSimilarity& reference, std::optional<double> colorDistance) {
+  nlohmann::json out = similarityJson(reference);
+  out["color_histogram_distance"] = colorDistance.value_or(0.0);
+  return out;
+}
+
 }  // namespace
 
+nlohmann::json textureQualityJson(const TextureQuality& q, const ContinuousQualityOptions& o) {
+  nlohmann::json report = header(o);
+  report.update(
+      {{"texture", similarityJson(q.texture)}, {"color_histogram_distance", q.colorHistogramDistance}});
+  if (q.reference) {
+    report["reference"] = referenceJson(*q.reference, q.referenceColorHistogramDistance);
+    report["ratio_to_reference"] = {{"texture", ratiosJson(q.texture, *q.reference)}};
+  }
+  report["seconds"] = q.seconds;
+  return report;
+}
+
 nlohmann::json continuousQualityJson(const ContinuousQuality& q, const ContinuousQualityOptions& o) {
-  nlohmann::json report = {{"distance_units", "RMS per component, sRGB in [0, 1]"},
-                           {"similarity_patch_side", o.similaritySide},
-                           {"scales", o.scales},
-                           {"axis", similarityJson(q.axis)},
-                           {"oblique", similarityJson(q.oblique)},
-                           {"color_histogram_distance", q.colorHistogramDistance}};
+  nlohmann::json report = header(o);
+  report.update({{"axis", similarityJson(q.axis)},
+                 {"oblique", similarityJson(q.oblique)},
+                 {"color_histogram_distance", q.colorHistogramDistance}});
   if (q.positions)
     report.update({{"position_coverage", q.positions->coverage},
                    {"position_flatness", q.positions->flatness},
                    {"position_variation", q.positions->variation}});
   if (q.reference) {
-    report["reference"] = similarityJson(*q.reference);
-    report["reference"]["color_histogram_distance"] = q.referenceColorHistogramDistance.value_or(0.0);
+    report["reference"] = referenceJson(*q.reference, q.referenceColorHistogramDistance);
     report["ratio_to_reference"] = {{"axis", ratiosJson(q.axis, *q.reference)},
                                     {"oblique", ratiosJson(q.oblique, *q.reference)}};
   }

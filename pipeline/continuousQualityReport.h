@@ -11,4 +11,7 @@ namespace solidtex {
 nlohmann::json continuousQualityJson(const ContinuousQuality& quality,
                                      const ContinuousQualityOptions& options);
 
+/// The report's `quality` of a 2D texture: the same figures for the texture and the reference.
+nlohmann::json textureQualityJson(const TextureQuality& quality, const ContinuousQualityOptions& options);
+
 }  // namespace solidtex

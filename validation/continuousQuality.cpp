@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -15,14 +17,11 @@
 namespace solidtex {
 namespace {
 
-void checkInputs(const SolidVolume& solid, const cv::Mat& exemplar, const cv::Mat& reference,
-                 const ContinuousQualityOptions& o) {
+void checkOptions(const cv::Mat& exemplar, const cv::Mat& reference, const ContinuousQualityOptions& o) {
   if (exemplar.empty() || exemplar.type() != CV_32FC3)
     throw InputError("the exemplar must be a 3-channel float sRGB image");
   if (!reference.empty() && reference.type() != CV_32FC3)
     throw InputError("the reference must be a 3-channel float sRGB image");
-  if (solid.color.empty() || solid.color.size() != solid.dims.count())
-    throw InputError("the solid has no color grid covering its box");
   const auto positive = [](int v) { return v > 0; };
   if (o.similaritySide <= 0 || !std::all_of(o.distanceSides.begin(), o.distanceSides.end(), positive) ||
       o.scales.empty() || !std::all_of(o.scales.begin(), o.scales.end(), positive) || o.patches <= 0 ||
@@ -30,25 +29,25 @@ void checkInputs(const SolidVolume& solid, const cv::Mat& exemplar, const cv::Ma
     throw InputError("patch sides, scales and counts must be positive");
 }
 
-// One patch size and scale: the exemplar's patches and the sets compared with them.
-struct PatchSets {
-  Eigen::MatrixXf exemplar, axis, oblique, reference;
+// Where compared patches come from: a solid's axis or oblique slices, an image.
+struct PatchSource {
+  std::function<std::int64_t(PatchGeometry)> positions;  ///< how many patches it holds (0: none fit)
+  std::function<Eigen::MatrixXf(PatchGeometry, int, std::uint64_t)> sample;
 };
 
-std::optional<PatchSets> samplePatchSets(const SrgbVolume& volume, const cv::Mat& exemplar,
-                                         const cv::Mat& reference, PatchGeometry g, std::uint64_t seed) {
-  std::int64_t count =
-      std::min(std::int64_t(std::numeric_limits<int>::max()), patchPositions(exemplar.size(), g));
-  if (!reference.empty()) count = std::min(count, patchPositions(reference.size(), g));
-  if (count <= 0 || !axisPatchesFit(volume.dims, g) || !obliquePatchesFit(volume.dims, g))
-    return std::nullopt;
-  const int n = int(count);
-  PatchSets sets;
-  sets.exemplar = imagePatches(exemplar, g, n, deriveSeed(seed, 0));
-  sets.axis = axisSlicePatches(volume, g, n, deriveSeed(seed, 1));
-  sets.oblique = obliqueSlicePatches(volume, g, n, deriveSeed(seed, 2));
-  if (!reference.empty()) sets.reference = imagePatches(reference, g, n, deriveSeed(seed, 3));
-  return sets;
+PatchSource imageSource(const cv::Mat& image) {
+  return {[&image](PatchGeometry g) { return patchPositions(image.size(), g); },
+          [&image](PatchGeometry g, int n, std::uint64_t seed) { return imagePatches(image, g, n, seed); }};
+}
+
+PatchSource sliceSource(const SrgbVolume& volume, bool oblique) {
+  return {[&volume, oblique](PatchGeometry g) {
+            const bool fits = oblique ? obliquePatchesFit(volume.dims, g) : axisPatchesFit(volume.dims, g);
+            return fits ? std::int64_t(std::numeric_limits<int>::max()) : std::int64_t(0);
+          },
+          [&volume, oblique](PatchGeometry g, int n, std::uint64_t seed) {
+            return oblique ? obliqueSlicePatches(volume, g, n, seed) : axisSlicePatches(volume, g, n, seed);
+          }};
 }
 
 // Coherence and completeness of `patches` against the exemplar's, from `queries` random patches of each
@@ -60,18 +59,53 @@ void addSimilarity(const Eigen::MatrixXf& patches, const Eigen::MatrixXf& exempl
   into.completeness += meanNearestPatchDistance(exemplar.leftCols(q), patches);
 }
 
-void addDistance(const Eigen::MatrixXf& patches, const Eigen::MatrixXf& exemplar, PatchGeometry g,
-                 int directions, std::uint64_t seed, PatchSimilarity& into) {
-  into.patchDistances.push_back(
-      {g.side, g.scale, int(patches.cols()), slicedWasserstein(patches, exemplar, directions, seed)});
-}
-
 void average(PatchSimilarity& s, int similarityScales) {
   s.coherence /= similarityScales;
   s.completeness /= similarityScales;
   double sum = 0;
   for (const PatchDistance& d : s.patchDistances) sum += d.distance;
   s.patchDistance = s.patchDistances.empty() ? 0.0 : sum / double(s.patchDistances.size());
+}
+
+// Every source against the exemplar, at every patch side and scale where all of them and the exemplar
+// hold patches, with the same number of patches from each.
+std::vector<PatchSimilarity> comparePatchSources(const std::vector<PatchSource>& sources,
+                                                 const cv::Mat& exemplar, const ContinuousQualityOptions& o) {
+  std::set<int> sides(o.distanceSides.begin(), o.distanceSides.end());
+  sides.insert(o.similaritySide);
+  std::vector<PatchSimilarity> out(sources.size());
+  int similarityScales = 0;
+  for (int side : sides)
+    for (int scale : o.scales) {
+      const PatchGeometry g{side, scale};
+      std::int64_t count = patchPositions(exemplar.size(), g);
+      for (const PatchSource& source : sources) count = std::min(count, source.positions(g));
+      if (count <= 0) continue;
+      const std::uint64_t seed = deriveSeed(o.seed, std::uint64_t(side), std::uint64_t(scale));
+      const Eigen::MatrixXf reference = imagePatches(exemplar, g, int(count), deriveSeed(seed, 0));
+      const bool similarity = side == o.similaritySide;
+      const bool distance =
+          std::find(o.distanceSides.begin(), o.distanceSides.end(), side) != o.distanceSides.end();
+      similarityScales += similarity;
+      for (std::size_t s = 0; s < sources.size(); ++s) {
+        const Eigen::MatrixXf patches = sources[s].sample(g, int(count), deriveSeed(seed, s + 1));
+        if (similarity) addSimilarity(patches, reference, o.queries, out[s]);
+        if (distance)
+          out[s].patchDistances.push_back(
+              {side, scale, int(count),
+               slicedWasserstein(patches, reference, o.directions, deriveSeed(seed, 4))});
+      }
+    }
+  if (similarityScales == 0)
+    throw InputError("the solid or image and the photos are too small for " +
+                     std::to_string(o.similaritySide) + " x " + std::to_string(o.similaritySide) +
+                     " patches");
+  for (PatchSimilarity& s : out) average(s, similarityScales);
+  return out;
+}
+
+double colorDistance(const float* rgb, std::size_t count, const cv::Mat& exemplar, int bins) {
+  return colorHistogramDistance(rgb, count, exemplar.ptr<float>(), exemplar.total(), bins);
 }
 
 std::optional<PositionHistogramStats> positionsOf(const SolidVolume& solid, const cv::Size& exemplar) {
@@ -91,49 +125,47 @@ std::optional<PositionHistogramStats> positionsOf(const SolidVolume& solid, cons
 ContinuousQuality measureContinuousSolid(const SolidVolume& solid, const cv::Mat& exemplarImage,
                                          const cv::Mat& referenceImage, const ContinuousQualityOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  checkInputs(solid, exemplarImage, referenceImage, o);
+  checkOptions(exemplarImage, referenceImage, o);
+  if (solid.color.empty() || solid.color.size() != solid.dims.count())
+    throw InputError("the solid has no color grid covering its box");
   const cv::Mat exemplar = exemplarImage.clone(), reference = referenceImage.clone();  // continuous
   const SrgbVolume volume = srgbVolumeOf(solid);
-  std::set<int> sides(o.distanceSides.begin(), o.distanceSides.end());
-  sides.insert(o.similaritySide);
-
+  std::vector<PatchSource> sources{sliceSource(volume, false), sliceSource(volume, true)};
+  if (!reference.empty()) sources.push_back(imageSource(reference));
+  const std::vector<PatchSimilarity> similarity = comparePatchSources(sources, exemplar, o);
   ContinuousQuality q;
-  if (!reference.empty()) q.reference.emplace();
-  int similarityScales = 0;
-  for (int side : sides)
-    for (int scale : o.scales) {
-      const PatchGeometry g{side, scale};
-      const std::uint64_t seed = deriveSeed(o.seed, std::uint64_t(side), std::uint64_t(scale));
-      const std::optional<PatchSets> sets = samplePatchSets(volume, exemplar, reference, g, seed);
-      if (!sets) continue;
-      if (side == o.similaritySide) {
-        ++similarityScales;
-        addSimilarity(sets->axis, sets->exemplar, o.queries, q.axis);
-        addSimilarity(sets->oblique, sets->exemplar, o.queries, q.oblique);
-        if (q.reference) addSimilarity(sets->reference, sets->exemplar, o.queries, *q.reference);
-      }
-      if (std::find(o.distanceSides.begin(), o.distanceSides.end(), side) == o.distanceSides.end()) continue;
-      const std::uint64_t directions = deriveSeed(seed, 4);
-      addDistance(sets->axis, sets->exemplar, g, o.directions, directions, q.axis);
-      addDistance(sets->oblique, sets->exemplar, g, o.directions, directions, q.oblique);
-      if (q.reference)
-        addDistance(sets->reference, sets->exemplar, g, o.directions, directions, *q.reference);
-    }
-  if (similarityScales == 0)
-    throw InputError("the solid and the photos are too small for " + std::to_string(o.similaritySide) +
-                     " x " + std::to_string(o.similaritySide) + " patches on oblique slices");
-  average(q.axis, similarityScales);
-  average(q.oblique, similarityScales);
-  if (q.reference) average(*q.reference, similarityScales);
-
-  const auto* exemplarColors = exemplar.ptr<float>();
-  const std::size_t exemplarPixels = exemplar.total();
-  q.colorHistogramDistance = colorHistogramDistance(volume.rgb.data(), volume.dims.count(), exemplarColors,
-                                                    exemplarPixels, o.histogramBins);
-  if (!reference.empty())
-    q.referenceColorHistogramDistance = colorHistogramDistance(
-        reference.ptr<float>(), reference.total(), exemplarColors, exemplarPixels, o.histogramBins);
+  q.axis = similarity[0];
+  q.oblique = similarity[1];
+  q.colorHistogramDistance = colorDistance(volume.rgb.data(), volume.dims.count(), exemplar, o.histogramBins);
+  if (!reference.empty()) {
+    q.reference = similarity[2];
+    q.referenceColorHistogramDistance =
+        colorDistance(reference.ptr<float>(), reference.total(), exemplar, o.histogramBins);
+  }
   q.positions = positionsOf(solid, exemplar.size());
+  q.seconds = secondsSince(start);
+  return q;
+}
+
+TextureQuality measureTexture(const cv::Mat& textureImage, const cv::Mat& exemplarImage,
+                              const cv::Mat& referenceImage, const ContinuousQualityOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  checkOptions(exemplarImage, referenceImage, o);
+  if (textureImage.empty() || textureImage.type() != CV_32FC3)
+    throw InputError("the texture must be a 3-channel float sRGB image");
+  const cv::Mat texture = textureImage.clone(), exemplar = exemplarImage.clone(),
+                reference = referenceImage.clone();
+  std::vector<PatchSource> sources{imageSource(texture)};
+  if (!reference.empty()) sources.push_back(imageSource(reference));
+  const std::vector<PatchSimilarity> similarity = comparePatchSources(sources, exemplar, o);
+  TextureQuality q;
+  q.texture = similarity[0];
+  q.colorHistogramDistance = colorDistance(texture.ptr<float>(), texture.total(), exemplar, o.histogramBins);
+  if (!reference.empty()) {
+    q.reference = similarity[1];
+    q.referenceColorHistogramDistance =
+        colorDistance(reference.ptr<float>(), reference.total(), exemplar, o.histogramBins);
+  }
   q.seconds = secondsSince(start);
   return q;
 }

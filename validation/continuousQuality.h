@@ -71,6 +71,20 @@ ContinuousQuality measureContinuousSolid(const SolidVolume& solid, const cv::Mat
                                          const cv::Mat& reference = {},
                                          const ContinuousQualityOptions& options = {});
 
+/// A 2D texture against its exemplar, and a second photo against the same exemplar.
+struct TextureQuality {
+  PatchSimilarity texture;
+  std::optional<PatchSimilarity> reference;
+  double colorHistogramDistance = 0;
+  std::optional<double> referenceColorHistogramDistance;
+  double seconds = 0;
+};
+
+/// Measures a synthesised 2D texture (CV_32FC3 sRGB) against its exemplar as measureContinuousSolid
+/// measures a solid's slices, with the same reference level.
+TextureQuality measureTexture(const cv::Mat& texture, const cv::Mat& exemplar, const cv::Mat& reference = {},
+                              const ContinuousQualityOptions& options = {});
+
 /// Total-variation distance (in [0,1]) between the joint RGB histograms (bins^3) of two sets of
 /// interleaved sRGB colours.
 double colorHistogramDistance(const float* a, std::size_t countA, const float* b, std::size_t countB,

@@ -22,8 +22,7 @@ void writeBlock(RgbImage& out, int x, int y, const float* a, const float* h, con
 
 RgbImage crop(const RgbImage& image, int width, int height) {
   RgbImage out = blankImage(width, height);
-  for (int y = 0; y < height; ++y)
-    std::copy_n(image.at(0, y), std::size_t(width) * 3, out.at(0, y));
+  for (int y = 0; y < height; ++y) std::copy_n(image.at(0, y), std::size_t(width) * 3, out.at(0, y));
   return out;
 }
 
@@ -94,7 +93,8 @@ RgbImage rebuildFromSources(const RgbImage& image, const std::vector<std::int32_
         writeBlock(finer, x, y, current.at(x, y), &details.h[i], &details.v[i], &details.d[i]);
         for (int b = 0; b < 2; ++b)
           for (int a = 0; a < 2; ++a)
-            finerFrom[std::size_t(2 * y + b) * finer.width + 2 * x + a] = (2 * sy + b) * (2 * details.width) + 2 * sx + a;
+            finerFrom[std::size_t(2 * y + b) * finer.width + 2 * x + a] =
+                (2 * sy + b) * (2 * details.width) + 2 * sx + a;
       }
     current = std::move(finer);
     from = std::move(finerFrom);

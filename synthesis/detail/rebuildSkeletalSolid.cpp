@@ -10,7 +10,8 @@ namespace solidtex::synthesis {
 namespace {
 
 // Adds slice `k` orthogonal to `axis`, rebuilt, to the 2^levels fine slices it covers.
-void addRebuiltSlice(const WorkVolume& coarse, const HaarPyramid& pyramid, int axis, int k, WorkVolume& fine) {
+void addRebuiltSlice(const WorkVolume& coarse, const HaarPyramid& pyramid, int axis, int k,
+                     WorkVolume& fine) {
   const SliceAxes s = sliceAxes(axis);
   const int n = coarse.n;
   RgbImage slice{n, n, std::vector<float>(std::size_t(n) * n * 3)};

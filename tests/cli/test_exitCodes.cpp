@@ -81,7 +81,8 @@ TEST(ExitCodes, HelpAndVersionSucceed) {
   const Outcome version = runSolidtex("--version");
   EXPECT_EQ(version.exitCode, 0);
   EXPECT_FALSE(version.out.empty());
-  for (const char* command : {"analyze", "particles", "compare", "synthesize", "spaciousness", "truth"}) {
+  for (const char* command :
+       {"analyze", "particles", "compare", "synthesize", "synthesize2d", "spaciousness", "truth"}) {
     const Outcome help = runSolidtex(std::string(command) + " --help");
     EXPECT_EQ(help.exitCode, 0) << command;
     EXPECT_NE(help.out.find("--help"), std::string::npos) << command;
@@ -103,7 +104,14 @@ TEST(ExitCodes, AJobThatFailsIsOneWithOneLineAndNoOutput) {
   expectRefused(
       {"particles " + shellWord(dir / "missing.png") + out, "particles " + kPhoto + out + " --size 1",
        "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
-       "synthesize " + kPhoto + out + " --method none"},
+       "synthesize " + kPhoto + out + " --method none",
+       "synthesize " + kPhoto + out + " --method skeletal --wavelet-levels 3"},
+      1, dir);
+  const std::string png = " -o " + shellWord(dir / "a.png") + " --report " + shellWord(dir / "r.json");
+  expectRefused(
+      {"synthesize2d " + kPhoto + png + " --method none", "synthesize2d " + kPhoto + png + " --size 100 96",
+       "synthesize2d " + kPhoto + png + " --neighborhoods 64",
+       "synthesize2d " + kPhoto + " -o " + shellWord(dir / "a.vdb")},
       1, dir);
 }
 

@@ -75,7 +75,8 @@ TEST(Haar, ASolidOfOneSourceRebuildsToTheMeanOfItsBlockInThreeOrientations) {
     coarse.rgb.insert(coarse.rgb.end(), p.coarse.at(1, 1), p.coarse.at(1, 1) + 3);
   const WorkVolume fine = rebuildSkeletalSolid(coarse, p);
   ASSERT_EQ(fine.n, 8);
-  // Voxel (x, y, z): x-slices put exemplar x along y and exemplar y along z, y-slices (x, z), z-slices (x, y).
+  // Voxel (x, y, z): x-slices put exemplar x along y and exemplar y along z, y-slices (x, z), z-slices (x,
+  // y).
   for (int z = 0; z < 8; ++z)
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x)

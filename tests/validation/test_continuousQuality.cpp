@@ -195,6 +195,20 @@ TEST(ContinuousQuality, ASolidTooSmallForThePatchesIsAnInputError) {
   EXPECT_THROW(measureContinuousSolid(SolidVolume{}, exemplar), InputError);
 }
 
+TEST(ContinuousQuality, TextureMeasuresSeeTheExemplarAsZeroAndBlurAsWorse) {
+  const cv::Mat exemplar = discs(48, 0.3, 8), second = discs(48, 0.3, 9);
+  cv::Mat blurred;
+  cv::GaussianBlur(second, blurred, cv::Size(), 1.5, 1.5, cv::BORDER_REFLECT);
+  const TextureQuality same = measureTexture(exemplar, exemplar, exemplar);
+  EXPECT_NEAR(same.texture.bidirectional(), 0.0, 1e-6);
+  EXPECT_NEAR(same.texture.patchDistance, 0.0, 1e-6);
+  EXPECT_DOUBLE_EQ(same.colorHistogramDistance, 0.0);
+  const TextureQuality sharp = measureTexture(second, exemplar);
+  const TextureQuality soft = measureTexture(blurred, exemplar);
+  EXPECT_GT(soft.texture.completeness, sharp.texture.completeness);
+  EXPECT_GT(soft.texture.patchDistance, sharp.texture.patchDistance);
+}
+
 TEST(ContinuousQuality, ColorHistogramDistance) {
   const std::vector<float> a{0.1f, 0.1f, 0.1f, 0.9f, 0.9f, 0.9f}, b{0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f};
   EXPECT_DOUBLE_EQ(colorHistogramDistance(a.data(), 2, a.data(), 2), 0.0);

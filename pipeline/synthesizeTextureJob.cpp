@@ -1,0 +1,74 @@
+#include "pipeline/synthesizeTextureJob.h"
+
+#include <filesystem>
+
+#include "Version.h"
+#include "common/Error.h"
+#include "pipeline/continuousQualityReport.h"
+#include "pipeline/jobSupport.h"
+#include "segmentation/imageIO.h"
+
+namespace solidtex {
+namespace {
+
+nlohmann::json levelsJson(const TextureSynthesisResult& r) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t l = 0; l < r.levels.size(); ++l) {
+    const TextureLevelStatistics& s = r.levels[l];
+    levels.push_back({{"level", l + 1},
+                      {"width", s.width},
+                      {"height", s.height},
+                      {"exemplar_width", s.exemplarWidth},
+                      {"exemplar_height", s.exemplarHeight},
+                      {"neighborhood", s.neighborhood},
+                      {"analysis_seconds", s.analysisSeconds},
+                      {"energies", s.energies},
+                      {"seconds", s.seconds}});
+  }
+  return levels;
+}
+
+}  // namespace
+
+nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
+  namespace fs = std::filesystem;
+  if (fs::path(job.output).extension() != ".png") throw InputError("output " + job.output + " must end in .png");
+  const fs::path parent = fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
+  if (!fs::is_directory(parent))
+    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  const cv::Mat exemplar = loadPhoto(job.exemplar);
+  const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
+  ProgressLine progress(job.progress);
+  TextureSynthesisOptions options = job.synthesis;
+  if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
+  const TextureSynthesisResult result = synthesizeTexture(exemplar, options);
+  const TextureSynthesisOptions& o = job.synthesis;
+  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
+                           {"command", "synthesize2d"},
+                           {"method", textureMethodName(o.method)},
+                           {"exemplar", {{"name", job.exemplar}, {"width", exemplar.cols}, {"height", exemplar.rows}}},
+                           {"width", o.width},
+                           {"height", o.height},
+                           {"levels", o.levels},
+                           {"neighborhoods", result.neighborhoods},
+                           {"iterations", o.iterations},
+                           {"pca_dims", o.pcaDims},
+                           {"seed", o.seed},
+                           {"level_reports", levelsJson(result)},
+                           {"seconds", result.seconds}};
+  if (o.method == TextureMethod::Skeletal)
+    report.update({{"wavelet_levels", o.waveletLevels}, {"rebuild_seconds", result.rebuildSeconds.value_or(0.0)}});
+  if (job.measure) {
+    progress.update("measuring the texture against the exemplar");
+    const TextureQuality quality = measureTexture(result.image, exemplar, reference, job.quality);
+    report["quality"] = textureQualityJson(quality, job.quality);
+  }
+  progress.done();
+  report["peak_memory_mib"] = peakMemoryMiB();
+  writeImage(job.output, result.image);
+  report["outputs"] = {{"png", job.output}};
+  if (job.report) writeJsonFile(*job.report, report);
+  return report;
+}
+
+}  // namespace solidtex
