@@ -24,7 +24,8 @@ Action addTruthCommand(CLI::App& app);
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
 
-/// --levels, --wavelet-levels, --neighborhoods: shared by synthesize and synthesize2d.
-void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods);
+/// --levels, --wavelet-levels, --neighborhoods, --distance: shared by synthesize and synthesize2d.
+void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods,
+                       std::string& distance);
 
 }  // namespace solidtex::cli

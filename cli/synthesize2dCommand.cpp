@@ -9,6 +9,7 @@ namespace solidtex::cli {
 Action addSynthesize2dCommand(CLI::App& app) {
   auto job = std::make_shared<SynthesizeTextureJob>();
   auto method = std::make_shared<std::string>("kwatra");
+  auto distance = std::make_shared<std::string>("rgb");
   auto size = std::make_shared<std::vector<int>>(std::vector<int>{128, 128});
   TextureSynthesisOptions& o = job->synthesis;
   CLI::App* command = app.add_subcommand("synthesize2d", "Make a tileable 2D texture (PNG) from an exemplar");
@@ -20,9 +21,10 @@ Action addSynthesize2dCommand(CLI::App& app) {
                    "levels rebuilt from wavelet details)")
       ->capture_default_str();
   command->add_option("--size", *size, "Width and height in pixels")->expected(2)->capture_default_str();
-  addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods);
+  addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods, *distance);
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
-  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")->capture_default_str();
+  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
+      ->capture_default_str();
   command->add_option("--seed", o.seed, "Random seed: same seed, same image")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
@@ -31,13 +33,14 @@ Action addSynthesize2dCommand(CLI::App& app) {
                    "A second photo of the material: the report's quality also as ratios to it")
       ->check(CLI::ExistingFile);
   command->add_flag("!--quiet", job->progress, "No progress line");
-  return [job, method, size] {
+  return [job, method, size, distance] {
     job->synthesis.method = parseTextureMethod(*method);
+    job->synthesis.distance = parseDistance(*distance);
     job->synthesis.width = (*size)[0];
     job->synthesis.height = (*size)[1];
     runSynthesizeTexture(*job);
-    std::cout << job->output << ": " << job->synthesis.width << "x" << job->synthesis.height << " by " << *method
-              << '\n';
+    std::cout << job->output << ": " << job->synthesis.width << "x" << job->synthesis.height << " by "
+              << *method << '\n';
     return 0;
   };
 }

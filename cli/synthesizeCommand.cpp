@@ -6,7 +6,8 @@
 
 namespace solidtex::cli {
 
-void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods) {
+void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods,
+                       std::string& distance) {
   command.add_option("--levels", levels, "Multi-resolution levels (1-8)")->capture_default_str();
   command
       .add_option("--wavelet-levels", waveletLevels,
@@ -15,12 +16,18 @@ void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::
   command.add_option("--neighborhoods", neighborhoods, "Neighbourhood side per level, coarsest first")
       ->delimiter(',')
       ->capture_default_str();
+  command
+      .add_option(
+          "--distance", distance,
+          "Neighbourhood distance: rgb (colours) or wavelet (Haar coefficients of each pixel's 2x2 block)")
+      ->capture_default_str();
 }
 
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   auto job = std::make_shared<SynthesizeJob>();
   job->commandLine = commandLine;
   auto method = std::make_shared<std::string>("chen-wang");
+  auto distance = std::make_shared<std::string>("rgb");
   SynthesisOptions& o = job->synthesis;
   CLI::App* command =
       app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
@@ -33,7 +40,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
           "finer levels rebuilt from wavelet details)")
       ->capture_default_str();
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
-  addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods);
+  addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods, *distance);
   command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
   command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
@@ -45,8 +52,9 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview, "Folder for preview PNGs");
   command->add_flag("!--quiet", job->progress, "No progress line");
-  return [job, method] {
+  return [job, method, distance] {
     job->synthesis.method = parseMethod(*method);
+    job->synthesis.distance = parseDistance(*distance);
     runSynthesize(*job);
     std::cout << job->output << ": " << job->synthesis.size << "^3 voxels by " << *method << '\n';
     return 0;

@@ -33,6 +33,7 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
        {{"name", o.exemplarName}, {"width", finest.exemplarWidth}, {"height", finest.exemplarHeight}}}};
   if (o.method != Method::Kopf) report["color_histogram_matching"] = o.colorHistogramMatching;
   if (o.method == Method::Skeletal) report["wavelet_levels"] = o.waveletLevels;
+  report["distance"] = distanceName(o.distance);
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < stats.levels.size(); ++l) {
     const LevelStatistics& level = stats.levels[l];

@@ -32,8 +32,10 @@ nlohmann::json levelsJson(const TextureSynthesisResult& r) {
 
 nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   namespace fs = std::filesystem;
-  if (fs::path(job.output).extension() != ".png") throw InputError("output " + job.output + " must end in .png");
-  const fs::path parent = fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
+  if (fs::path(job.output).extension() != ".png")
+    throw InputError("output " + job.output + " must end in .png");
+  const fs::path parent =
+      fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
   if (!fs::is_directory(parent))
     throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
   const cv::Mat exemplar = loadPhoto(job.exemplar);
@@ -43,21 +45,24 @@ nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
   const TextureSynthesisResult result = synthesizeTexture(exemplar, options);
   const TextureSynthesisOptions& o = job.synthesis;
-  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
-                           {"command", "synthesize2d"},
-                           {"method", textureMethodName(o.method)},
-                           {"exemplar", {{"name", job.exemplar}, {"width", exemplar.cols}, {"height", exemplar.rows}}},
-                           {"width", o.width},
-                           {"height", o.height},
-                           {"levels", o.levels},
-                           {"neighborhoods", result.neighborhoods},
-                           {"iterations", o.iterations},
-                           {"pca_dims", o.pcaDims},
-                           {"seed", o.seed},
-                           {"level_reports", levelsJson(result)},
-                           {"seconds", result.seconds}};
+  nlohmann::json report = {
+      {"solidtex_version", SOLIDTEX_VERSION},
+      {"command", "synthesize2d"},
+      {"method", textureMethodName(o.method)},
+      {"exemplar", {{"name", job.exemplar}, {"width", exemplar.cols}, {"height", exemplar.rows}}},
+      {"width", o.width},
+      {"height", o.height},
+      {"levels", o.levels},
+      {"neighborhoods", result.neighborhoods},
+      {"iterations", o.iterations},
+      {"pca_dims", o.pcaDims},
+      {"distance", distanceName(o.distance)},
+      {"seed", o.seed},
+      {"level_reports", levelsJson(result)},
+      {"seconds", result.seconds}};
   if (o.method == TextureMethod::Skeletal)
-    report.update({{"wavelet_levels", o.waveletLevels}, {"rebuild_seconds", result.rebuildSeconds.value_or(0.0)}});
+    report.update(
+        {{"wavelet_levels", o.waveletLevels}, {"rebuild_seconds", result.rebuildSeconds.value_or(0.0)}});
   if (job.measure) {
     progress.update("measuring the texture against the exemplar");
     const TextureQuality quality = measureTexture(result.image, exemplar, reference, job.quality);

@@ -22,6 +22,15 @@ std::string methodName(Method method);
 /// Parses "chen-wang" / "kopf" / "skeletal"; throws InputError otherwise.
 Method parseMethod(const std::string& name);
 
+/// What neighbourhood distances compare: colours (Pan et al.'s eq. 2) or the Haar coefficients of
+/// every pixel's 2x2 block (eq. 3; NeighborhoodShape::wavelet).
+enum class NeighborhoodDistance { Rgb, Wavelet };
+
+/// "rgb" or "wavelet".
+std::string distanceName(NeighborhoodDistance distance);
+/// Parses "rgb" / "wavelet"; throws InputError otherwise.
+NeighborhoodDistance parseDistance(const std::string& name);
+
 /// Kopf et al.'s r (Chen and Wang's gamma): the slice energy sums ||s - e||^r (eq. 1), which the
 /// IRLS weights ||s - e||^(r-2) minimise.
 inline constexpr double kEnergyExponent = 0.8;
@@ -41,6 +50,7 @@ struct SynthesisOptions {
   /// skeletal: how many of the finest levels are rebuilt from Haar details instead of optimised
   /// (the paper uses 1); fewer than `levels`
   int waveletLevels = 1;
+  NeighborhoodDistance distance = NeighborhoodDistance::Rgb;
   std::vector<int> neighborhoods{
       8, 6, 4};                    ///< neighbourhood side per level, coarsest first (one value: all levels)
   int k = 5;                       ///< k-coherence similarity set size

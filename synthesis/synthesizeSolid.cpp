@@ -50,6 +50,16 @@ std::string methodName(Method method) {
   return "";
 }
 
+std::string distanceName(NeighborhoodDistance distance) {
+  return distance == NeighborhoodDistance::Rgb ? "rgb" : "wavelet";
+}
+
+NeighborhoodDistance parseDistance(const std::string& name) {
+  if (name == "rgb") return NeighborhoodDistance::Rgb;
+  if (name == "wavelet") return NeighborhoodDistance::Wavelet;
+  throw InputError("unknown neighbourhood distance '" + name + "' (expected rgb or wavelet)");
+}
+
 Method parseMethod(const std::string& name) {
   for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal})
     if (name == methodName(m)) return m;
@@ -103,7 +113,8 @@ std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
                        " neighbourhood");
     int w = exemplar.cols, h = exemplar.rows;
     for (int k = l; k < o.levels - 1; ++k) w /= 2, h /= 2;
-    if (w < n[l] || h < n[l])
+    const int extent = NeighborhoodShape{n[l], o.distance == NeighborhoodDistance::Wavelet}.extent();
+    if (w < extent || h < extent)
       throw InputError("exemplar " + sizeText(exemplar.cols, exemplar.rows) + " is too small for the " +
                        std::to_string(n[l]) + "x" + std::to_string(n[l]) + " neighbourhood at level " +
                        std::to_string(l + 1) + " of " + std::to_string(o.levels) + " (" + sizeText(w, h) +
@@ -159,7 +170,7 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   const bool chenWang = o.method != Method::Kopf;  // skeletal optimises its skeleton by chen-wang
   const RgbImage& ex = pyramid.levels[l];
   const int N = o.size >> (o.levels - 1 - l);
-  const NeighborhoodShape shape{neighborhood};
+  const NeighborhoodShape shape{neighborhood, o.distance == NeighborhoodDistance::Wavelet};
   const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
   const SliceCentreGrid centres{N, o.sparseStep};
   const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow &&

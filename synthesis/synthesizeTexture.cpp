@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include <tbb/global_control.h>
@@ -57,20 +57,23 @@ std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions
     throw InputError("--size must be within [2, 8192] on both sides");
   const int rebuilt = o.method == TextureMethod::Skeletal ? o.waveletLevels : 0;
   if (o.method == TextureMethod::Skeletal && (o.waveletLevels < 1 || o.waveletLevels >= o.levels))
-    throw InputError("--wavelet-levels must be at least 1 and below --levels: the coarsest level is optimised");
+    throw InputError(
+        "--wavelet-levels must be at least 1 and below --levels: the coarsest level is optimised");
   std::vector<int> n = o.neighborhoods;
   if (n.size() == 1) n.assign(std::size_t(o.levels), n[0]);
   if (int(n.size()) != o.levels)
-    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) + " sizes but --levels is " +
-                     std::to_string(o.levels));
+    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) +
+                     " sizes but --levels is " + std::to_string(o.levels));
   const int multiple = (1 << (o.levels - 1)) * o.sparseStep;
   if (o.width % multiple != 0 || o.height % multiple != 0)
     throw InputError("--size " + std::to_string(o.width) + " " + std::to_string(o.height) +
                      " must be a multiple of " + std::to_string(multiple) + " (2^(levels-1) x the step)");
   for (int l = 0; l < o.levels - rebuilt; ++l) {
     const int shift = o.levels - 1 - l;
-    if (n[std::size_t(l)] < 2 || n[std::size_t(l)] > 32) throw InputError("neighbourhood sides must be in [2, 32]");
-    if ((exemplar.cols >> shift) < n[std::size_t(l)] || (exemplar.rows >> shift) < n[std::size_t(l)])
+    if (n[std::size_t(l)] < 2 || n[std::size_t(l)] > 32)
+      throw InputError("neighbourhood sides must be in [2, 32]");
+    const int extent = n[std::size_t(l)] + (o.distance == NeighborhoodDistance::Wavelet ? 1 : 0);
+    if ((exemplar.cols >> shift) < extent || (exemplar.rows >> shift) < extent)
       throw InputError("exemplar " + std::to_string(exemplar.cols) + "x" + std::to_string(exemplar.rows) +
                        " is too small for the " + std::to_string(n[std::size_t(l)]) +
                        "-pixel neighbourhood at level " + std::to_string(l + 1) + " (" +
@@ -131,9 +134,10 @@ Matches search(const Texture& t, const ExemplarNeighborhoods& en, const KdTree& 
     Eigen::VectorXf x(shape.dims());
     for (int c = 0; c < m.cols; ++c) {
       float* v = x.data();
+      const auto at = [&](int i, int j) { return t.rgb.at(t.wrapX(c * step + i), t.wrapY(r * step + j)); };
       for (int j = shape.lo(); j <= shape.hi(); ++j)
-        for (int i = shape.lo(); i <= shape.hi(); ++i, v += 3)
-          std::copy_n(t.rgb.at(t.wrapX(c * step + i), t.wrapY(r * step + j)), 3, v);
+        for (int i = shape.lo(); i <= shape.hi(); ++i)
+          writePixelFeatures(shape, at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1), v);
       const Eigen::VectorXf reduced = en.pca.project(x);
       const std::int32_t best = tree.nearest(reduced.data());
       const std::size_t id = std::size_t(r) * std::size_t(m.cols) + std::size_t(c);
@@ -209,9 +213,11 @@ TextureLevelStatistics optimizeLevel(int l, int levels, const ExemplarPyramid& p
   const auto start = Clock::now();
   const RgbImage& ex = pyramid.levels[std::size_t(l)];
   const int shift = levels - 1 - l;
-  const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, NeighborhoodShape{neighborhood}, o.pcaDims);
+  const ExemplarNeighborhoods en = buildExemplarNeighborhoods(
+      ex, NeighborhoodShape{neighborhood, o.distance == NeighborhoodDistance::Wavelet}, o.pcaDims);
   const KdTree tree(en.reduced.data(), en.count(), en.reducedDims());
-  TextureLevelStatistics stats{o.width >> shift, o.height >> shift, ex.width, ex.height, neighborhood, 0, {}, 0};
+  TextureLevelStatistics stats{
+      o.width >> shift, o.height >> shift, ex.width, ex.height, neighborhood, 0, {}, 0};
   stats.analysisSeconds = secondsSince(start);
   texture = l == 0 ? randomTexture(stats.width, stats.height, ex, deriveSeed(o.seed, 0))
                    : upsample(texture, pyramid.levels[std::size_t(l - 1)].width, ex);
@@ -251,7 +257,8 @@ TextureSynthesisResult synthesizeTexture(const cv::Mat& exemplarSrgb, const Text
   result.neighborhoods = validate(exemplarSrgb, o);
   std::unique_ptr<tbb::global_control> threadLimit;
   if (o.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+    threadLimit =
+        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
 
   const int rebuilt = o.method == TextureMethod::Skeletal ? o.waveletLevels : 0;
   RgbImage finest = toRgbImage(exemplarSrgb);
@@ -268,7 +275,8 @@ TextureSynthesisResult synthesizeTexture(const cv::Mat& exemplarSrgb, const Text
   coarse.height = o.height >> rebuilt;
   Texture texture;
   for (int l = 0; l < optimised; ++l)
-    result.levels.push_back(optimizeLevel(l, optimised, pyramid, result.neighborhoods[std::size_t(l)], coarse, texture));
+    result.levels.push_back(
+        optimizeLevel(l, optimised, pyramid, result.neighborhoods[std::size_t(l)], coarse, texture));
   if (haar) {
     const auto rebuildStart = Clock::now();
     texture.rgb = rebuildFromSources(texture.rgb, texture.source, *haar);

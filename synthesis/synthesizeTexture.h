@@ -26,14 +26,15 @@ TextureMethod parseTextureMethod(const std::string& name);
 /// Options of synthesizeTexture; defaults follow the `solidtex synthesize2d` command.
 struct TextureSynthesisOptions {
   TextureMethod method = TextureMethod::Kwatra;
-  int width = 128, height = 128;  ///< output size; each a multiple of 2^(levels-1) * sparseStep
-  int levels = 3;                 ///< multi-resolution levels, coarsest first
+  int width = 128, height = 128;              ///< output size; each a multiple of 2^(levels-1) * sparseStep
+  int levels = 3;                             ///< multi-resolution levels, coarsest first
   std::vector<int> neighborhoods{16, 12, 8};  ///< side per level, coarsest first (one value: all levels)
-  int iterations = 5;                       ///< search + optimisation iterations per level
-  int pcaDims = 20;                         ///< PCA dimensions of neighbourhood vectors
-  int waveletLevels = 1;                    ///< skeletal: finest levels rebuilt instead of optimised
-  int sparseStep = 2;                       ///< neighbourhoods are matched on every step-th pixel
-  double irlsExponent = kEnergyExponent;    ///< r of the IRLS weights ||x - z||^(r-2)
+  int iterations = 5;                         ///< search + optimisation iterations per level
+  int pcaDims = 20;                           ///< PCA dimensions of neighbourhood vectors
+  int waveletLevels = 1;                      ///< skeletal: finest levels rebuilt instead of optimised
+  NeighborhoodDistance distance = NeighborhoodDistance::Rgb;
+  int sparseStep = 2;                     ///< neighbourhoods are matched on every step-th pixel
+  double irlsExponent = kEnergyExponent;  ///< r of the IRLS weights ||x - z||^(r-2)
   std::uint64_t seed = 1;
   int threads = 0;  ///< worker threads; 0 = all cores. Output does not depend on it.
   std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
@@ -51,10 +52,10 @@ struct TextureLevelStatistics {
 
 /// The synthesised texture and how it was made.
 struct TextureSynthesisResult {
-  cv::Mat image;  ///< CV_32FC3 sRGB in [0,1], R,G,B order; tiles periodically
-  std::vector<int> neighborhoods;            ///< per optimised level
+  cv::Mat image;                               ///< CV_32FC3 sRGB in [0,1], R,G,B order; tiles periodically
+  std::vector<int> neighborhoods;              ///< per optimised level
   std::vector<TextureLevelStatistics> levels;  ///< the optimised levels
-  std::optional<double> rebuildSeconds;      ///< skeletal
+  std::optional<double> rebuildSeconds;        ///< skeletal
   double seconds = 0;
 };
 

@@ -99,6 +99,38 @@ TEST(Neighborhoods, ZSlicesOfAStackedVolumeMatchTheExemplarExactly) {
   EXPECT_EQ(total, std::int64_t(matches.grid.count()));
 }
 
+// Pan et al.'s eq. 3 features: a pixel's Haar coefficients, the same read from a slice as from the
+// exemplar; and the transform is orthogonal up to 1/2, so a feature difference is half the colour one.
+TEST(Neighborhoods, WaveletFeaturesAreTheBlocksHaarCoefficientsOnSlicesAndExemplar) {
+  const RgbImage ex = toRgbImage(test::randomImage(16, 16, 4));
+  const WorkVolume v = stackedVolume(ex);
+  const NeighborhoodShape shape{4, true};
+  EXPECT_EQ(shape.dims(), 4 * 4 * 12);
+  const ExemplarNeighborhoods n = buildExemplarNeighborhoods(ex, shape, 20);
+  EXPECT_EQ(n.cols, 16 - 5 + 1);  // one more pixel read beyond the neighbourhood
+  std::vector<float> q(std::size_t(shape.dims()));
+  gatherSliceNeighborhood(v, 2, {6, 7, 3}, shape, q.data());
+  for (int c = 0; c < shape.dims(); ++c) EXPECT_FLOAT_EQ(q[std::size_t(c)], n.full(c, n.indexOf(6, 7)));
+  // The first pixel (offset -2, -2) of the neighbourhood at (6, 7): the block at (4, 5).
+  const float* p00 = ex.at(4, 5);
+  const float *p10 = ex.at(5, 5), *p01 = ex.at(4, 6), *p11 = ex.at(5, 6);
+  EXPECT_FLOAT_EQ(q[0], 0.25f * (p00[0] + p10[0] + p01[0] + p11[0]));
+  EXPECT_FLOAT_EQ(q[3], 0.25f * (p00[0] - p10[0] + p01[0] - p11[0]));
+  EXPECT_FLOAT_EQ(q[6], 0.25f * (p00[0] + p10[0] - p01[0] - p11[0]));
+  EXPECT_FLOAT_EQ(q[9], 0.25f * (p00[0] - p10[0] - p01[0] + p11[0]));
+  float features[12], other[12];
+  float* out = features;
+  writePixelFeatures(shape, ex.at(1, 1), ex.at(2, 1), ex.at(1, 2), ex.at(2, 2), out);
+  out = other;
+  writePixelFeatures(shape, ex.at(9, 3), ex.at(10, 3), ex.at(9, 4), ex.at(10, 4), out);
+  double featureDistance = 0, colorDistance = 0;
+  for (int k = 0; k < 12; ++k) featureDistance += double(features[k] - other[k]) * (features[k] - other[k]);
+  for (const auto& [a, b] : {std::pair{ex.at(1, 1), ex.at(9, 3)}, std::pair{ex.at(2, 1), ex.at(10, 3)},
+                             std::pair{ex.at(1, 2), ex.at(9, 4)}, std::pair{ex.at(2, 2), ex.at(10, 4)}})
+    for (int c = 0; c < 3; ++c) colorDistance += double(a[c] - b[c]) * (a[c] - b[c]);
+  EXPECT_NEAR(featureDistance, colorDistance / 4, 1e-6);
+}
+
 /// Eq. 5-6 scores of every exemplar neighbourhood for the slice neighbourhood `id`, by brute force:
 /// the search must pick their minimum (ties: smaller id) whatever it prunes.
 int bruteForceBest(const WorkVolume& v, const ExemplarNeighborhoods& n, const SearchSettings& s,

@@ -87,6 +87,7 @@ TEST(Synthesize, SameSeedSameOutputWithOneAndTwoThreads) {
   const cv::Mat ex = test::smoothImage(40, 40);
   for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal}) {
     SynthesisOptions o = smallOptions(m);
+    if (m == Method::Skeletal) o.distance = NeighborhoodDistance::Wavelet;
     o.size = 16;
     o.neighborhoods = {6, 4};
     o.iterations = 2;
@@ -199,6 +200,13 @@ TEST(Synthesize, BadInputThrowsInputError) {
   EXPECT_THROW(synthesizeSolid(ex, o), InputError);  // 4^3 coarsest volume < 8x8 neighbourhood
   EXPECT_THROW(synthesizeSolid(cv::Mat(), o), InputError);
   EXPECT_THROW(parseMethod("wavelet"), InputError);
+  EXPECT_THROW(parseDistance("haar"), InputError);
+  o.size = 64;
+  o.neighborhoods = {10, 6, 4};
+  o.distance = NeighborhoodDistance::Wavelet;
+  EXPECT_THROW(synthesizeSolid(ex, o), InputError);  // 10x10 at level 1 holds 10 but not the 11 wavelet reads
+  o.distance = NeighborhoodDistance::Rgb;
+  o.neighborhoods = {8, 6, 4};
   o.size = 32;
   o.method = Method::Skeletal;
   o.waveletLevels = 3;

@@ -82,6 +82,7 @@ TEST(SynthesizeTexture, SameSeedSameImageWithOneAndTwoThreads) {
   const cv::Mat ex = test::smoothImage(40, 40);
   for (TextureMethod m : {TextureMethod::Kwatra, TextureMethod::Skeletal}) {
     TextureSynthesisOptions o = smallOptions(m);
+    o.distance = m == TextureMethod::Skeletal ? NeighborhoodDistance::Wavelet : NeighborhoodDistance::Rgb;
     o.threads = 1;
     const cv::Mat one = synthesizeTexture(ex, o).image;
     o.threads = 2;
