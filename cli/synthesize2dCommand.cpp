@@ -33,6 +33,8 @@ Action addSynthesize2dCommand(CLI::App& app) {
                    "A second photo of the material: the report's quality also as ratios to it")
       ->check(CLI::ExistingFile);
   command->add_flag("!--quiet", job->progress, "No progress line");
+  command->add_flag("!--no-quality", job->measure,
+                    "Do not measure the result against the exemplar (the report's quality)");
   return [job, method, size, distance] {
     job->synthesis.method = parseTextureMethod(*method);
     job->synthesis.distance = parseDistance(*distance);

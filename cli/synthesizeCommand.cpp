@@ -52,6 +52,8 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview, "Folder for preview PNGs");
   command->add_flag("!--quiet", job->progress, "No progress line");
+  command->add_flag("!--no-quality", job->measure,
+                    "Do not measure the result against the exemplar (the report's quality)");
   return [job, method, distance] {
     job->synthesis.method = parseMethod(*method);
     job->synthesis.distance = parseDistance(*distance);
