@@ -132,3 +132,24 @@ TEST(ExitCodes, ASolidRecordsItsCommandLineAndIsTheSameAtAnyThreadCount) {
   EXPECT_FALSE(bytes[0].empty());
   EXPECT_EQ(bytes[0], bytes[1]);
 }
+
+TEST(ExitCodes, SkeletalSynthesisIsTheSameAtAnyThreadCount) {
+  const fs::path dir = emptyFolder("skeletal");
+  const std::string exemplar = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "continuous" / "terra.png");
+  for (const std::string& command :
+       {std::string("synthesize ") + exemplar + " --size 32 --method skeletal --distance wavelet -o ",
+        std::string("synthesize2d ") + exemplar +
+            " --size 32 32 --method skeletal --neighborhoods 8,6,4 -o "}) {
+    std::string bytes[2];
+    for (int threads : {1, 2}) {
+      const fs::path output =
+          dir / (std::to_string(threads) + (command.starts_with("synthesize2d") ? ".png" : ".vdb"));
+      const Outcome outcome = runSolidtex(command + shellWord(output) + " --quiet --no-quality --threads " +
+                                          std::to_string(threads));
+      ASSERT_EQ(outcome.exitCode, 0) << command;
+      bytes[threads - 1] = readFile(output);
+    }
+    EXPECT_FALSE(bytes[0].empty()) << command;
+    EXPECT_EQ(bytes[0], bytes[1]) << command;
+  }
+}
