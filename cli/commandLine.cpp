@@ -16,7 +16,7 @@ std::string volumeCommandLine(const std::vector<std::string>& arguments) {
       i += name == arg ? 1 : 0;
       continue;
     }
-    if (arg != "--quiet") line += " " + arg;
+    if (arg != "--quiet" && arg != "--no-quality") line += " " + arg;
   }
   return line;
 }

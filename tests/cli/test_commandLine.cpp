@@ -18,6 +18,8 @@ TEST(VolumeCommandLine, DropsOutputsThreadsAndQuietInEverySpelling) {
                                "--report=r.json", "--size", "32"}),
             "solidtex particles p.png --size 32");
   EXPECT_EQ(volumeCommandLine({"analyze", "p.png", "--labels", "l.png"}), "solidtex analyze p.png");
+  EXPECT_EQ(volumeCommandLine({"synthesize", "e.png", "--no-quality", "--size", "32"}),
+            "solidtex synthesize e.png --size 32");
   EXPECT_EQ(volumeCommandLine({"compare", "p.png", "v.vdb", "--plot", "c.png"}),
             "solidtex compare p.png v.vdb");
 }

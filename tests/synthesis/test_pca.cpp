@@ -3,6 +3,8 @@
 #include "common/Random.h"
 #include "synthesis/detail/Pca.h"
 
+#include <Eigen/Eigenvalues>
+
 using namespace solidtex;
 using namespace solidtex::synthesis;
 
@@ -51,6 +53,26 @@ TEST(Pca, TruncatedRoundTripLosesTheDroppedVariance) {
   // Projections of all samples agree with projectAll.
   const Eigen::MatrixXf all = pca.projectAll(x);
   EXPECT_LT((all.col(7) - pca.project(x.col(7))).norm(), 1e-5f);
+}
+
+// Fewer samples than dimensions: the basis comes from the Gram matrix and must span what the
+// covariance's top eigenvectors span, with the same variances.
+TEST(Pca, FewerSamplesThanDimensionsGiveTheCovariancesComponents) {
+  const int D = 60, M = 25, d = 8;
+  Eigen::MatrixXf x(D, M);
+  solidtex::Rng rng(7);
+  for (int j = 0; j < M; ++j)
+    for (int i = 0; i < D; ++i) x(i, j) = float(solidtex::uniform01(rng)) * float(1 + i % 5);
+  const Pca pca = fitPca(x, d);
+  const Eigen::MatrixXd centred = (x.colwise() - x.rowwise().mean()).cast<double>();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reference(centred * centred.transpose() / double(M));
+  for (int c = 0; c < d; ++c) {
+    const Eigen::VectorXd expected = reference.eigenvectors().col(D - 1 - c);
+    EXPECT_NEAR(std::abs(expected.dot(pca.basis.col(c).cast<double>())), 1.0, 1e-4) << c;
+    EXPECT_NEAR(pca.eigenvalues[c], reference.eigenvalues()[D - 1 - c],
+                1e-4 * reference.eigenvalues()[D - 1]);
+  }
+  EXPECT_NEAR(pca.eigenvalues.cast<double>().sum(), reference.eigenvalues().sum(), 1e-3);
 }
 
 TEST(Pca, DimsAreClamped) {
