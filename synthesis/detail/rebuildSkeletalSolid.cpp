@@ -1,6 +1,7 @@
 #include "synthesis/detail/rebuildSkeletalSolid.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <tbb/parallel_for.h>
 
@@ -35,7 +36,7 @@ void addRebuiltSlice(const WorkVolume& coarse, const HaarPyramid& pyramid, int a
         f[s.u] = i, f[s.w] = j;
         float* out = fine.at(fine.index(f[0], f[1], f[2]));
         const float* in = rebuilt.at(i, j);
-        for (int ch = 0; ch < 3; ++ch) out[ch] += in[ch] / 3.0f;
+        for (int ch = 0; ch < 3; ++ch) out[ch] += in[ch];
       }
   }
 }
@@ -50,7 +51,19 @@ WorkVolume rebuildSkeletalSolid(const WorkVolume& coarse, const HaarPyramid& pyr
   // direction fill disjoint voxels.
   for (int axis = 0; axis < 3; ++axis)
     tbb::parallel_for(0, coarse.n, [&](int k) { addRebuiltSlice(coarse, pyramid, axis, k, fine); });
-  for (float& v : fine.rgb) v = std::clamp(v, 0.0f, 1.0f);
+  // Each direction adds its own detail to the voxel's colour a. Their mean would keep a third of
+  // their variance where the three are unrelated, which blurs every slice; their sum over sqrt(3)
+  // keeps it: v = a + (sum_d rebuilt_d - 3a) / sqrt(3).
+  const float gain = 1.0f / std::sqrt(3.0f);
+  const int shift = int(pyramid.details.size());
+  tbb::parallel_for(0, fine.n, [&](int z) {
+    for (int y = 0; y < fine.n; ++y)
+      for (int x = 0; x < fine.n; ++x) {
+        const float* a = coarse.at(coarse.index(x >> shift, y >> shift, z >> shift));
+        float* v = fine.at(fine.index(x, y, z));
+        for (int c = 0; c < 3; ++c) v[c] = std::clamp(a[c] + gain * (v[c] - 3.0f * a[c]), 0.0f, 1.0f);
+      }
+  });
   return fine;
 }
 

@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "TestImages.h"
@@ -64,8 +67,8 @@ TEST(Haar, RebuildingCopiesTheSourcesBlocks) {
 }
 
 // Every slice of a coarse solid that copies one skeleton pixel rebuilds to that pixel's 2x2 block in
-// each direction; their mean is what every fine voxel holds.
-TEST(Haar, ASolidOfOneSourceRebuildsToTheMeanOfItsBlockInThreeOrientations) {
+// each direction; a fine voxel holds the pixel's colour plus the three directions' details over sqrt(3).
+TEST(Haar, ASolidOfOneSourceRebuildsToItsBlockInThreeOrientations) {
   const HaarPyramid p = buildHaarPyramid(toRgbImage(test::randomImage(8, 8, 5)), 1);
   const int s = 5;  // skeleton pixel (1, 1)
   WorkVolume coarse;
@@ -81,10 +84,10 @@ TEST(Haar, ASolidOfOneSourceRebuildsToTheMeanOfItsBlockInThreeOrientations) {
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x)
         for (int c = 0; c < 3; ++c) {
-          const float expected =
-              (p.finest.at(2 + y % 2, 2 + z % 2)[c] + p.finest.at(2 + x % 2, 2 + z % 2)[c] +
-               p.finest.at(2 + x % 2, 2 + y % 2)[c]) /
-              3.0f;
+          const float a = p.coarse.at(1, 1)[c];
+          const float details = p.finest.at(2 + y % 2, 2 + z % 2)[c] + p.finest.at(2 + x % 2, 2 + z % 2)[c] +
+                                p.finest.at(2 + x % 2, 2 + y % 2)[c] - 3 * a;
+          const float expected = std::clamp(a + details / std::sqrt(3.0f), 0.0f, 1.0f);
           ASSERT_NEAR(fine.at(fine.index(x, y, z))[c], expected, 1e-5f);
         }
 }
