@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Skeletal synthesis against the optimisation it builds on, same exemplar, size and machine, one run
 # each: 2D kwatra vs skeletal at SIZE^2 and solids chen-wang vs skeletal at SIZE^3, all from the
-# top-left SIZE x SIZE quarter of each photo. Wall time and peak resident memory of the whole command
-# (GNU time), quality not measured. Prints a Markdown table.
+# top-left SIZE x SIZE quarter of each photo. The synthesis seconds of the report, the wall time and peak
+# resident memory of the whole command (GNU time; start-up and image I/O included), quality not measured.
+# Prints a Markdown table.
 # Usage: bench/skeletal_speed.sh SIZE PHOTO.png...   (run from the repo root after building)
 set -euo pipefail
 size=$1
@@ -10,9 +11,13 @@ shift
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-timed() { /usr/bin/time -f "%e %M" -o "$out/time" "$@" > /dev/null; read -r seconds kib < "$out/time"; }
-echo "| photo | kind | baseline | s | MiB | skeletal s | MiB | speed-up |"
-echo "|---|---|---|---|---|---|---|---|"
+timed() {
+  /usr/bin/time -f "%e %M" -o "$out/time" "$@" --report "$out/r.json" > /dev/null
+  read -r wall kib < "$out/time"
+  seconds=$(python3 -c "import json; print(f'{json.load(open(\"$out/r.json\"))[\"seconds\"]:.2f}')")
+}
+echo "| photo | kind | baseline | synthesis s | wall s | MiB | skeletal synthesis s | wall s | MiB | speed-up (synthesis) |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for photo in "$@"; do
   name=$(basename "$photo" .png)
   oiiotool "$photo" --cut "${size}x${size}+0+0" -o "$out/exemplar.png"
@@ -25,8 +30,8 @@ for photo in "$@"; do
       run() { timed "$bin" synthesize "$out/exemplar.png" -o "$out/v.vdb" --size "$size" --method "$1" --quiet --no-quality; }
     fi
     run "$base"
-    s0=$seconds m0=$((kib / 1024))
+    s0=$seconds w0=$wall m0=$((kib / 1024))
     run skeletal
-    echo "| $name | $kind | $base | $s0 | $m0 | $seconds | $((kib / 1024)) | $(python3 -c "print(f'{$s0 / $seconds:.1f}x')") |"
+    echo "| $name | $kind | $base | $s0 | $w0 | $m0 | $seconds | $wall | $((kib / 1024)) | $(python3 -c "print(f'{$s0 / $seconds:.1f}x')") |"
   done
 done
