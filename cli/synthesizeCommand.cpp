@@ -28,6 +28,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   job->commandLine = commandLine;
   auto method = std::make_shared<std::string>("chen-wang");
   auto distance = std::make_shared<std::string>("rgb");
+  auto similaritySearch = std::make_shared<std::string>("auto");
   SynthesisOptions& o = job->synthesis;
   CLI::App* command =
       app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
@@ -42,6 +43,11 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
   addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods, *distance);
   command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
+  command
+      ->add_option("--similarity-search", *similaritySearch,
+                   "How similarity sets are found: exact (kd-tree), approximate (FAISS inverted file, for "
+                   "large exemplars) or auto (approximate from 16384 neighbourhoods per level)")
+      ->capture_default_str();
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
   command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
       ->capture_default_str();
@@ -54,9 +60,10 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_flag("!--quiet", job->progress, "No progress line");
   command->add_flag("!--no-quality", job->measure,
                     "Do not measure the result against the exemplar (the report's quality)");
-  return [job, method, distance] {
+  return [job, method, distance, similaritySearch] {
     job->synthesis.method = parseMethod(*method);
     job->synthesis.distance = parseDistance(*distance);
+    job->synthesis.similaritySearch = parseSimilaritySearch(*similaritySearch);
     runSynthesize(*job);
     std::cout << job->output << ": " << job->synthesis.size << "^3 voxels by " << *method << '\n';
     return 0;

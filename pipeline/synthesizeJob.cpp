@@ -47,18 +47,25 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
       if (step.positionCoverage) entry["position_coverage"] = *step.positionCoverage;
       iterations.push_back(entry);
     }
-    levels.push_back({{"level", l + 1},
-                      {"volume_size", level.volumeSize},
-                      {"exemplar_width", level.exemplarWidth},
-                      {"exemplar_height", level.exemplarHeight},
-                      {"neighborhood", level.neighborhood},
-                      {"exemplar_neighborhoods", level.exemplarNeighborhoods},
-                      {"pca_dims", level.pcaDims},
-                      {"pca_kept_variance", level.pcaKeptVariance},
-                      {"search", searchName(level.search)},
-                      {"analysis_seconds", level.analysisSeconds},
-                      {"iterations", iterations},
-                      {"seconds", level.seconds}});
+    nlohmann::json levelEntry = {{"level", l + 1},
+                                 {"volume_size", level.volumeSize},
+                                 {"exemplar_width", level.exemplarWidth},
+                                 {"exemplar_height", level.exemplarHeight},
+                                 {"neighborhood", level.neighborhood},
+                                 {"exemplar_neighborhoods", level.exemplarNeighborhoods},
+                                 {"pca_dims", level.pcaDims},
+                                 {"pca_kept_variance", level.pcaKeptVariance},
+                                 {"search", searchName(level.search)},
+                                 {"analysis_seconds", level.analysisSeconds},
+                                 {"iterations", iterations},
+                                 {"seconds", level.seconds}};
+    if (level.search == NeighborhoodSearch::KCoherence)
+      levelEntry["similarity_sets"] = level.similarityLists
+                                          ? nlohmann::json{{"search", "approximate"},
+                                                           {"lists", level.similarityLists},
+                                                           {"probes", level.similarityProbes}}
+                                          : nlohmann::json{{"search", "exact"}};
+    levels.push_back(levelEntry);
   }
   report["level_reports"] = levels;
   if (stats.indexCoverage) report["index_coverage"] = *stats.indexCoverage;

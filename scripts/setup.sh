@@ -8,7 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools
   libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-  libnanoflann-dev
+  libnanoflann-dev libfaiss-dev libblas-dev liblapack-dev
   libgtest-dev
 )
 missing=()

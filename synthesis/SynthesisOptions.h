@@ -31,6 +31,18 @@ std::string distanceName(NeighborhoodDistance distance);
 /// Parses "rgb" / "wavelet"; throws InputError otherwise.
 NeighborhoodDistance parseDistance(const std::string& name);
 
+/// How chen-wang's k-coherence similarity sets find each exemplar neighbourhood's nearest others.
+enum class SimilaritySearch {
+  Automatic,    ///< exact below SynthesisOptions::approximateFrom neighbourhoods, approximate from there
+  Exact,        ///< kd-tree: exact, minutes for a 512^2 photo
+  Approximate,  ///< FAISS inverted file (InvertedFileIndex): seconds, may miss a few nearest
+};
+
+/// "auto", "exact" or "approximate".
+std::string similaritySearchName(SimilaritySearch search);
+/// Parses "auto" / "exact" / "approximate"; throws InputError otherwise.
+SimilaritySearch parseSimilaritySearch(const std::string& name);
+
 /// Kopf et al.'s r (Chen and Wang's gamma): the slice energy sums ||s - e||^r (eq. 1), which the
 /// IRLS weights ||s - e||^(r-2) minimise.
 inline constexpr double kEnergyExponent = 0.8;
@@ -52,10 +64,11 @@ struct SynthesisOptions {
   int waveletLevels = 1;
   NeighborhoodDistance distance = NeighborhoodDistance::Rgb;
   std::vector<int> neighborhoods{
-      8, 6, 4};                    ///< neighbourhood side per level, coarsest first (one value: all levels)
-  int k = 5;                       ///< k-coherence similarity set size
-  int iterations = 5;              ///< search + optimisation iterations per level
-  int pcaDims = 20;                ///< PCA dimensions of neighbourhood vectors
+      8, 6, 4};        ///< neighbourhood side per level, coarsest first (one value: all levels)
+  int k = 5;           ///< k-coherence similarity set size
+  int iterations = 5;  ///< search + optimisation iterations per level
+  int pcaDims = 20;    ///< PCA dimensions of neighbourhood vectors
+  SimilaritySearch similaritySearch = SimilaritySearch::Automatic;
   std::optional<cv::Mat> control;  ///< greyscale map the exemplar's size: theta(p), phi(p) (brighter = more)
   std::uint64_t seed = 1;
   int threads = 0;           ///< worker threads; 0 = all cores. Output does not depend on it.
@@ -66,6 +79,9 @@ struct SynthesisOptions {
   int sparseStep = 2;       ///< slice neighbourhoods are matched on every step-th voxel in-plane
   int coherenceRadius = 1;  ///< k-coherence candidates come from slice neighbours within this radius
   int minSeparation = 2;    ///< similarity sets skip neighbourhoods within this many pixels
+  /// SimilaritySearch::Automatic: levels with at least this many exemplar neighbourhoods (a 128^2
+  /// exemplar has fewer) build their similarity sets approximately.
+  int approximateFrom = 16384;
   /// A level is searched exhaustively when it has fewer exemplar neighbourhoods than this and
   /// centres x neighbourhoods (candidate distances per iteration) is at most exhaustiveBudget;
   /// otherwise by k-coherence. Exhaustive search matters at the coarsest level, where a random

@@ -60,6 +60,25 @@ NeighborhoodDistance parseDistance(const std::string& name) {
   throw InputError("unknown neighbourhood distance '" + name + "' (expected rgb or wavelet)");
 }
 
+std::string similaritySearchName(SimilaritySearch search) {
+  switch (search) {
+    case SimilaritySearch::Automatic:
+      return "auto";
+    case SimilaritySearch::Exact:
+      return "exact";
+    case SimilaritySearch::Approximate:
+      return "approximate";
+  }
+  return "?";
+}
+
+SimilaritySearch parseSimilaritySearch(const std::string& name) {
+  for (SimilaritySearch s :
+       {SimilaritySearch::Automatic, SimilaritySearch::Exact, SimilaritySearch::Approximate})
+    if (name == similaritySearchName(s)) return s;
+  throw InputError("unknown similarity search '" + name + "' (expected auto, exact or approximate)");
+}
+
 Method parseMethod(const std::string& name) {
   for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal})
     if (name == methodName(m)) return m;
@@ -177,7 +196,12 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
                           double(centres.count()) * en.count() <= o.exhaustiveBudget;
   SimilaritySets sets;
   std::unique_ptr<KdTree> tree;
-  if (chenWang && !exhaustive) sets = buildSimilaritySets(en, o.k, o.minSeparation);
+  const bool approximate =
+      o.similaritySearch == SimilaritySearch::Approximate ||
+      (o.similaritySearch == SimilaritySearch::Automatic && en.count() >= o.approximateFrom);
+  if (chenWang && !exhaustive)
+    sets = approximate ? buildApproximateSimilaritySets(en, o.k, o.minSeparation)
+                       : buildSimilaritySets(en, o.k, o.minSeparation);
   if (!chenWang) tree = std::make_unique<KdTree>(en.reduced.data(), en.count(), en.reducedDims());
 
   LevelStatistics stats;
@@ -191,6 +215,8 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   stats.search = exhaustive ? NeighborhoodSearch::Exhaustive
                  : chenWang ? NeighborhoodSearch::KCoherence
                             : NeighborhoodSearch::KdTree;
+  stats.similarityLists = sets.lists;
+  stats.similarityProbes = sets.probes;
   stats.analysisSeconds = secondsSince(levelStart);
 
   WorkVolume& volume = state.volume;

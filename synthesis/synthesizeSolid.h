@@ -34,6 +34,9 @@ struct LevelStatistics {
   int pcaDims = 0;
   double pcaKeptVariance = 0;  ///< share of the neighbourhoods' variance the PCA keeps
   NeighborhoodSearch search = NeighborhoodSearch::Exhaustive;
+  /// k-coherence with approximate similarity sets: the inverted file's cells and probes; 0 if exact
+  int similarityLists = 0;
+  int similarityProbes = 0;
   double analysisSeconds = 0;  ///< neighbourhoods, PCA, similarity sets or tree
   std::vector<IterationStatistics> iterations;
   double seconds = 0;

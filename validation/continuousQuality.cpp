@@ -78,7 +78,7 @@ std::vector<PatchSimilarity> comparePatchSources(const std::vector<PatchSource>&
   for (int side : sides)
     for (int scale : o.scales) {
       const PatchGeometry g{side, scale};
-      std::int64_t count = patchPositions(exemplar.size(), g);
+      std::int64_t count = std::min<std::int64_t>(o.patches, patchPositions(exemplar.size(), g));
       for (const PatchSource& source : sources) count = std::min(count, source.positions(g));
       if (count <= 0) continue;
       const std::uint64_t seed = deriveSeed(o.seed, std::uint64_t(side), std::uint64_t(scale));

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "synthesis/detail/ExemplarNeighborhoods.h"
+#include "synthesis/detail/InvertedFileIndex.h"
 
 namespace solidtex::synthesis {
 
@@ -13,14 +14,22 @@ namespace solidtex::synthesis {
 struct SimilaritySets {
   int k = 0;
   std::vector<std::int32_t> ids;  ///< count * k; set of m at m*k
+  int lists = 0;                  ///< approximate sets: the inverted file's cells; 0 for exact sets
+  int probes = 0;                 ///< approximate sets: cells searched per neighbourhood
 
   const std::int32_t* of(int m) const { return ids.data() + std::size_t(m) * k; }
   int count() const { return k ? int(ids.size() / std::size_t(k)) : 0; }
 };
 
-/// Builds the sets with a kd-tree (nanoflann), queries in parallel (TBB); deterministic.
+/// Builds the sets with an exact kd-tree (nanoflann), queries in parallel (TBB); deterministic.
 /// k is clamped to the number of neighbourhoods.
 SimilaritySets buildSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k, int minSeparation = 0);
+
+/// The same sets from an approximate index (InvertedFileIndex): a neighbour in a cell that is not
+/// probed can be missed, and a nearer one of the probed cells takes its place. For large exemplars
+/// (hundreds of thousands of neighbourhoods), where the exact search takes minutes. Deterministic.
+SimilaritySets buildApproximateSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k,
+                                              int minSeparation = 0, const InvertedFileOptions& options = {});
 
 /// The same sets by exhaustive search (reference for tests; O(M^2)).
 SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k,

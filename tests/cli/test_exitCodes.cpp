@@ -105,7 +105,8 @@ TEST(ExitCodes, AJobThatFailsIsOneWithOneLineAndNoOutput) {
       {"particles " + shellWord(dir / "missing.png") + out, "particles " + kPhoto + out + " --size 1",
        "particles " + kPhoto + out + " --placer nearest", "particles " + kPhoto + out + " --threads -3",
        "synthesize " + kPhoto + out + " --method none",
-       "synthesize " + kPhoto + out + " --method skeletal --wavelet-levels 3"},
+       "synthesize " + kPhoto + out + " --method skeletal --wavelet-levels 3",
+       "synthesize " + kPhoto + out + " --similarity-search fast"},
       1, dir);
   const std::string png = " -o " + shellWord(dir / "a.png") + " --report " + shellWord(dir / "r.json");
   expectRefused(

@@ -148,6 +148,14 @@ TEST(Synthesize, ExhaustiveSearchOnlyWithinTheBudget) {
   const SynthesisResult budget = synthesizeSolid(ex, o);
   EXPECT_EQ(budget.statistics.levels[0].search, NeighborhoodSearch::Exhaustive);
   EXPECT_EQ(budget.statistics.levels[1].search, NeighborhoodSearch::KCoherence);
+  EXPECT_EQ(budget.statistics.levels[1].similarityLists, 0);  // 2025 neighbourhoods: exact sets
+
+  o.approximateFrom = 2000;
+  const SynthesisResult approximate = synthesizeSolid(ex, o);
+  EXPECT_EQ(approximate.statistics.levels[1].similarityLists, 90);  // 2 sqrt(2025)
+  EXPECT_EQ(approximate.statistics.levels[1].similarityProbes, 8);
+  o.similaritySearch = SimilaritySearch::Exact;
+  EXPECT_EQ(synthesizeSolid(ex, o).statistics.levels[1].similarityLists, 0);
 }
 
 TEST(Synthesize, KopfBlendsWithinTheColorRangeWithoutSources) {

@@ -189,6 +189,19 @@ TEST(ContinuousQuality, SameFiguresAtAnyThreadCount) {
   EXPECT_EQ(one.reference->patchDistance, two.reference->patchDistance);
 }
 
+// Large exemplars (a 1024^2 photo has a million patches of each size) are sampled, not taken whole.
+TEST(ContinuousQuality, PatchSetsAreCappedAtTheAskedCount) {
+  const cv::Mat exemplar = discs(48, 0.3, 10);
+  ContinuousQualityOptions o;
+  o.patches = 500;
+  const ContinuousQuality q = measureContinuousSolid(extrusion(exemplar, 48), exemplar, {}, o);
+  ASSERT_EQ(q.axis.patchDistances.size(), 6u);
+  for (const PatchDistance& d : q.axis.patchDistances) {
+    const int positions = (48 - d.side * d.scale + 1) * (48 - d.side * d.scale + 1);
+    EXPECT_EQ(d.patches, std::min(500, positions)) << "side " << d.side << " scale " << d.scale;
+  }
+}
+
 TEST(ContinuousQuality, ASolidTooSmallForThePatchesIsAnInputError) {
   const cv::Mat exemplar = discs(32, 0.3, 7);
   EXPECT_THROW(measureContinuousSolid(constantSolid({8, 8, 8}, cv::mean(exemplar)), exemplar), InputError);
