@@ -5,6 +5,7 @@
 # resident memory of the whole command (GNU time; start-up and image I/O included), quality not measured.
 # Prints a Markdown table.
 # Usage: bench/skeletal_speed.sh SIZE PHOTO.png...   (run from the repo root after building)
+# EXTRA_2D (environment): more options for both 2D runs, e.g. EXTRA_2D="--neighborhoods 13".
 set -euo pipefail
 size=$1
 shift
@@ -24,7 +25,7 @@ for photo in "$@"; do
   for kind in 2d solid; do
     if [ "$kind" = 2d ]; then
       base=kwatra
-      run() { timed "$bin" synthesize2d "$out/exemplar.png" -o "$out/t.png" --size "$size" "$size" --method "$1" --quiet --no-quality; }
+      run() { timed "$bin" synthesize2d "$out/exemplar.png" -o "$out/t.png" --size "$size" "$size" --method "$1" --quiet --no-quality ${EXTRA_2D:-}; }
     else
       base=chen-wang
       run() { timed "$bin" synthesize "$out/exemplar.png" -o "$out/v.vdb" --size "$size" --method "$1" --quiet --no-quality; }

@@ -22,6 +22,11 @@ Action addSynthesize2dCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--size", *size, "Width and height in pixels")->expected(2)->capture_default_str();
   addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods, *distance);
+  command->get_option("--neighborhoods")
+      ->description(
+          "Neighbourhood side per level, coarsest first (default 16,...,12,8, each at most half the "
+          "level's exemplar)")
+      ->default_str("");
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
   command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
       ->capture_default_str();

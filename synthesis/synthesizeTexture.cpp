@@ -46,6 +46,20 @@ struct Texture {
   int wrapY(int y) const { return ((y % rgb.height) + rgb.height) % rgb.height; }
 };
 
+/// TextureSynthesisOptions::neighborhoods left empty: Kwatra's sizes shrunk to fit small exemplars.
+std::vector<int> fittedNeighborhoods(const cv::Mat& exemplar, const TextureSynthesisOptions& o) {
+  std::vector<int> n(std::size_t(o.levels));
+  for (int l = 0; l < o.levels; ++l) {
+    const int shift = o.levels - 1 - l;
+    const int wanted = shift == 0 ? 8 : shift == 1 ? 12 : 16;
+    const int wavelet = o.distance == NeighborhoodDistance::Wavelet ? 1 : 0;
+    const int exemplarRoom = std::min(exemplar.cols >> shift, exemplar.rows >> shift) / 2 - wavelet;
+    const int outputRoom = std::min(o.width >> shift, o.height >> shift);  // the output wraps around
+    n[std::size_t(l)] = std::max(2, std::min({wanted, exemplarRoom, outputRoom}));
+  }
+  return n;
+}
+
 /// Neighbourhood side per level (one value broadcasts); checks everything the exemplar's size decides.
 std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions& o) {
   if (exemplar.empty()) throw InputError("exemplar image is empty");
@@ -59,11 +73,11 @@ std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions
   if (o.method == TextureMethod::Skeletal && (o.waveletLevels < 1 || o.waveletLevels >= o.levels))
     throw InputError(
         "--wavelet-levels must be at least 1 and below --levels: the coarsest level is optimised");
-  std::vector<int> n = o.neighborhoods;
+  std::vector<int> n = o.neighborhoods.empty() ? fittedNeighborhoods(exemplar, o) : o.neighborhoods;
   if (n.size() == 1) n.assign(std::size_t(o.levels), n[0]);
   if (int(n.size()) != o.levels)
-    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) +
-                     " sizes but --levels is " + std::to_string(o.levels));
+    throw InputError("--neighborhoods lists " + std::to_string(n.size()) + " sizes but --levels is " +
+                     std::to_string(o.levels));
   const int multiple = (1 << (o.levels - 1)) * o.sparseStep;
   if (o.width % multiple != 0 || o.height % multiple != 0)
     throw InputError("--size " + std::to_string(o.width) + " " + std::to_string(o.height) +

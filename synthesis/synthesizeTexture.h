@@ -26,12 +26,15 @@ TextureMethod parseTextureMethod(const std::string& name);
 /// Options of synthesizeTexture; defaults follow the `solidtex synthesize2d` command.
 struct TextureSynthesisOptions {
   TextureMethod method = TextureMethod::Kwatra;
-  int width = 128, height = 128;              ///< output size; each a multiple of 2^(levels-1) * sparseStep
-  int levels = 3;                             ///< multi-resolution levels, coarsest first
-  std::vector<int> neighborhoods{16, 12, 8};  ///< side per level, coarsest first (one value: all levels)
-  int iterations = 5;                         ///< search + optimisation iterations per level
-  int pcaDims = 20;                           ///< PCA dimensions of neighbourhood vectors
-  int waveletLevels = 1;                      ///< skeletal: finest levels rebuilt instead of optimised
+  int width = 128, height = 128;  ///< output size; each a multiple of 2^(levels-1) * sparseStep
+  int levels = 3;                 ///< multi-resolution levels, coarsest first
+  /// Side per level, coarsest first (one value: all levels). Empty: 8 at the finest level, 12 at the
+  /// next, 16 above, each at most half the level's exemplar and at most its output (small exemplars
+  /// still run).
+  std::vector<int> neighborhoods;
+  int iterations = 5;     ///< search + optimisation iterations per level
+  int pcaDims = 20;       ///< PCA dimensions of neighbourhood vectors
+  int waveletLevels = 1;  ///< skeletal: finest levels rebuilt instead of optimised
   NeighborhoodDistance distance = NeighborhoodDistance::Rgb;
   int sparseStep = 2;                     ///< neighbourhoods are matched on every step-th pixel
   double irlsExponent = kEnergyExponent;  ///< r of the IRLS weights ||x - z||^(r-2)

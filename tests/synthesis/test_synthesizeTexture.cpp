@@ -115,3 +115,15 @@ TEST(SynthesizeTexture, BadInputIsOneLineInputError) {
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }
 }
+
+// Without --neighborhoods, a 48x40 exemplar (12x10 at the coarsest of three levels) still runs: the
+// default 16,12,8 shrink to half of each level's exemplar; asked for explicitly, 16 is refused.
+TEST(SynthesizeTexture, DefaultNeighborhoodsFitSmallExemplars) {
+  const cv::Mat ex = test::smoothImage(48, 40);
+  TextureSynthesisOptions o;
+  o.width = o.height = 32;
+  o.iterations = 1;
+  EXPECT_EQ(synthesizeTexture(ex, o).neighborhoods, (std::vector<int>{5, 10, 8}));
+  o.neighborhoods = {16, 12, 8};
+  EXPECT_THROW(synthesizeTexture(ex, o), InputError);
+}
