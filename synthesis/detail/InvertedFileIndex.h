@@ -20,9 +20,9 @@ int invertedFileLists(int count, const InvertedFileOptions& options);
 /// Approximate nearest neighbours of each of `count` points of `dims` floats (row-major, point m at
 /// points + m*dims) among all of them, for point sets where an exact kd-tree degrades towards
 /// brute force (twenty dimensions, hundreds of thousands of points). An inverted file: FAISS's
-/// k-means splits the points into cells, and each point is compared with the points of the cells
-/// whose centroids are nearest to it (and of those its cell-mates probe: points of one cell are
-/// searched together, as matrix products). Parallel (TBB; FAISS's k-means on OpenMP with as many
+/// k-means splits the points into cells, and each point is compared with the members of the cells
+/// whose centroids are nearest to it; the points of one cell that probe the same cell are compared
+/// with it together, as one matrix product. Parallel (TBB; FAISS's k-means on OpenMP with as many
 /// threads); the answers do not depend on the thread count.
 class InvertedFileIndex {
 public:
