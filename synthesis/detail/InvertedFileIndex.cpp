@@ -5,12 +5,12 @@
 #include <limits>
 #include <vector>
 
-#include <Eigen/Core>
 #include <faiss/Clustering.h>
 #include <faiss/IndexFlat.h>
 #include <omp.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <Eigen/Core>
 
 namespace solidtex::synthesis {
 
@@ -40,8 +40,8 @@ void offer(float d, IdType id, int k, int& found, float* distances, IdType* ids)
 }
 
 /// Squared distances between the columns of a and of b by one matrix product: |a|^2 + |b|^2 - 2ab.
-RowMatrix pairwiseSquaredDistances(const ColumnMatrix& a, const Eigen::VectorXf& aNorms, const ColumnMatrix& b,
-                           const Eigen::VectorXf& bNorms) {
+RowMatrix pairwiseSquaredDistances(const ColumnMatrix& a, const Eigen::VectorXf& aNorms,
+                                   const ColumnMatrix& b, const Eigen::VectorXf& bNorms) {
   RowMatrix d = -2.0f * (a.transpose() * b);
   d.colwise() += aNorms;
   d.rowwise() += bNorms.transpose();
@@ -62,8 +62,8 @@ struct ProductFlatL2 : faiss::IndexFlatL2 {
     tbb::parallel_for(Id(0), (n + block - 1) / block, [&](Id b) {
       const Id first = b * block, count = std::min(block, n - first);
       const ColumnMatrix queries(x + first * d, d, count);
-      const RowMatrix all =
-          pairwiseSquaredDistances(queries, queries.colwise().squaredNorm().transpose(), centroids, centroidNorms);
+      const RowMatrix all = pairwiseSquaredDistances(queries, queries.colwise().squaredNorm().transpose(),
+                                                     centroids, centroidNorms);
       for (Id q = 0; q < count; ++q) {
         float* outDistances = distances + (first + q) * k;
         Id* outLabels = labels + (first + q) * k;
@@ -85,11 +85,11 @@ int invertedFileLists(int count, const InvertedFileOptions& options) {
 
 struct InvertedFileIndex::Impl {
   int count = 0, dims = 0, lists = 0, probes = 0;
-  std::vector<Id> probed;              ///< count x probes: each point's nearest cells, its own first
-  std::vector<int> cellStart;          ///< lists + 1: cell c holds sorted positions cellStart[c]..cellStart[c+1]
-  std::vector<std::int32_t> members;   ///< point ids in cell order (ascending within a cell)
-  std::vector<float> sorted;           ///< the points in cell order, dims floats each
-  Eigen::VectorXf norms;               ///< their squared norms
+  std::vector<Id> probed;      ///< count x probes: each point's nearest cells, its own first
+  std::vector<int> cellStart;  ///< lists + 1: cell c holds sorted positions cellStart[c]..cellStart[c+1]
+  std::vector<std::int32_t> members;  ///< point ids in cell order (ascending within a cell)
+  std::vector<float> sorted;          ///< the points in cell order, dims floats each
+  Eigen::VectorXf norms;              ///< their squared norms
 
   void buildCells(const float* points) {
     cellStart.assign(lists + 1, 0);
@@ -104,10 +104,13 @@ struct InvertedFileIndex::Impl {
     norms = ColumnMatrix(sorted.data(), dims, count).colwise().squaredNorm().transpose();
   }
 
-  ColumnMatrix cellPoints(int first, int n) const { return {sorted.data() + std::size_t(first) * dims, dims, n}; }
+  ColumnMatrix cellPoints(int first, int n) const {
+    return {sorted.data() + std::size_t(first) * dims, dims, n};
+  }
 };
 
-InvertedFileIndex::InvertedFileIndex(const float* points, int count, int dims, const InvertedFileOptions& options)
+InvertedFileIndex::InvertedFileIndex(const float* points, int count, int dims,
+                                     const InvertedFileOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& im = *impl_;
   im.count = count;

@@ -2,9 +2,9 @@
 
 #include <set>
 
+#include <tbb/global_control.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <tbb/global_control.h>
 
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
@@ -49,7 +49,8 @@ double recall(const ExemplarNeighborhoods& n, const InvertedFileIndex& index, in
   int found = 0, total = 0;
   for (int m = 0; m < n.count(); m += step) {
     tree.knn(n.reducedAt(m), k, exact.data(), d.data());
-    const std::set<std::int32_t> got(all.ids.begin() + std::size_t(m) * k, all.ids.begin() + std::size_t(m + 1) * k);
+    const std::set<std::int32_t> got(all.ids.begin() + std::size_t(m) * k,
+                                     all.ids.begin() + std::size_t(m + 1) * k);
     for (std::int32_t id : exact) found += got.count(id);
     total += k;
   }
