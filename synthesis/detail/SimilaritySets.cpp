@@ -37,64 +37,68 @@ int separationWindow(int minSeparation) {
   return side * side;
 }
 
-/// Fills every set from `knn(first, count, query, ids, distances)`, which writes the `query`
-/// nearest neighbourhoods (by distance, then id) of neighbourhoods first..first+count-1.
-template <class Knn>
-SimilaritySets fillSets(const ExemplarNeighborhoods& n, int k, int minSeparation, Knn&& knn) {
-  const int count = n.count();
+/// Sets of the right size for `n`, not yet filled.
+SimilaritySets emptySets(const ExemplarNeighborhoods& n, int k) {
   SimilaritySets sets;
-  sets.k = std::clamp(k, 1, std::max(1, count));
-  sets.ids.assign(std::size_t(count) * sets.k, 0);
-  const int query = std::min(count, sets.k + separationWindow(minSeparation));
-  constexpr int batch = 16384;  // bounds the candidate lists' memory on large exemplars
-  std::vector<std::int32_t> ids(std::size_t(std::min(count, batch)) * query);
-  std::vector<float> distances(ids.size());
-  for (int first = 0; first < count; first += batch) {
-    const int last = std::min(count, first + batch);
-    knn(first, last - first, query, ids.data(), distances.data());
-    tbb::parallel_for(tbb::blocked_range<int>(first, last, 64), [&](const tbb::blocked_range<int>& r) {
-      std::vector<std::pair<float, std::int32_t>> sorted;
-      for (int m = r.begin(); m != r.end(); ++m) {
-        const std::size_t row = std::size_t(m - first) * query;
-        sorted.clear();
-        for (int i = 0; i < query; ++i)
-          if (ids[row + i] >= 0) sorted.emplace_back(distances[row + i], ids[row + i]);
-        fillSet(n, m, sets.k, minSeparation, sorted, sets.ids.data() + std::size_t(m) * sets.k);
-      }
-    });
-  }
+  sets.k = std::clamp(k, 1, std::max(1, n.count()));
+  sets.ids.assign(std::size_t(n.count()) * sets.k, 0);
   return sets;
+}
+
+/// The number of nearest neighbourhoods to look up per set: enough for k after skipping the close ones.
+int queryCount(const ExemplarNeighborhoods& n, const SimilaritySets& sets, int minSeparation) {
+  return std::min(n.count(), sets.k + separationWindow(minSeparation));
+}
+
+/// Fills the sets of neighbourhoods first..last-1 from rows of their `query` nearest (by distance,
+/// then id; row 0 belongs to `first`).
+void fillSets(const ExemplarNeighborhoods& n, int first, int last, int query, int minSeparation,
+              const std::int32_t* ids, const float* distances, SimilaritySets& sets) {
+  tbb::parallel_for(tbb::blocked_range<int>(first, last, 64), [&](const tbb::blocked_range<int>& r) {
+    std::vector<std::pair<float, std::int32_t>> sorted;
+    for (int m = r.begin(); m != r.end(); ++m) {
+      const std::size_t row = std::size_t(m - first) * query;
+      sorted.clear();
+      for (int i = 0; i < query; ++i)
+        if (ids[row + i] >= 0) sorted.emplace_back(distances[row + i], ids[row + i]);
+      fillSet(n, m, sets.k, minSeparation, sorted, sets.ids.data() + std::size_t(m) * sets.k);
+    }
+  });
 }
 
 }  // namespace
 
 SimilaritySets buildSimilaritySets(const ExemplarNeighborhoods& n, int k, int minSeparation) {
-  if (n.count() == 0) return SimilaritySets{1, {}};
+  SimilaritySets sets = emptySets(n, k);
+  if (n.count() == 0) return sets;
   const KdTree tree(n.reduced.data(), n.count(), n.reducedDims());
-  return fillSets(
-      n, k, minSeparation, [&](int first, int count, int query, std::int32_t* ids, float* distances) {
-        tbb::parallel_for(tbb::blocked_range<int>(0, count, 64), [&](const tbb::blocked_range<int>& r) {
-          for (int i = r.begin(); i != r.end(); ++i)
-            tree.knn(n.reducedAt(first + i), query, ids + std::size_t(i) * query,
-                     distances + std::size_t(i) * query);
-        });
-      });
+  const int query = queryCount(n, sets, minSeparation);
+  constexpr int batch = 16384;  // bounds the candidate lists' memory on large exemplars
+  std::vector<std::int32_t> ids(std::size_t(std::min(n.count(), batch)) * query);
+  std::vector<float> distances(ids.size());
+  for (int first = 0; first < n.count(); first += batch) {
+    const int last = std::min(n.count(), first + batch);
+    tbb::parallel_for(tbb::blocked_range<int>(first, last, 64), [&](const tbb::blocked_range<int>& r) {
+      for (int m = r.begin(); m != r.end(); ++m) {
+        const std::size_t row = std::size_t(m - first) * query;
+        tree.knn(n.reducedAt(m), query, ids.data() + row, distances.data() + row);
+      }
+    });
+    fillSets(n, first, last, query, minSeparation, ids.data(), distances.data(), sets);
+  }
+  return sets;
 }
 
 SimilaritySets buildApproximateSimilaritySets(const ExemplarNeighborhoods& n, int k, int minSeparation,
                                               const InvertedFileOptions& options) {
-  if (n.count() == 0) return SimilaritySets{1, {}};
+  SimilaritySets sets = emptySets(n, k);
+  if (n.count() == 0) return sets;
   const InvertedFileIndex index(n.reduced.data(), n.count(), n.reducedDims(), options);
-  const int query = std::min(n.count(), std::clamp(k, 1, n.count()) + separationWindow(minSeparation));
-  std::vector<std::int32_t> allIds(std::size_t(n.count()) * query);
-  std::vector<float> allDistances(allIds.size());
-  index.knnOfAllPoints(query, allIds.data(), allDistances.data());
-  SimilaritySets sets =
-      fillSets(n, k, minSeparation, [&](int first, int count, int q, std::int32_t* ids, float* distances) {
-        const std::size_t from = std::size_t(first) * q, size = std::size_t(count) * q;
-        std::copy_n(allIds.begin() + from, size, ids);
-        std::copy_n(allDistances.begin() + from, size, distances);
-      });
+  const int query = queryCount(n, sets, minSeparation);
+  std::vector<std::int32_t> ids(std::size_t(n.count()) * query);
+  std::vector<float> distances(ids.size());
+  index.knnOfAllPoints(query, ids.data(), distances.data());
+  fillSets(n, 0, n.count(), query, minSeparation, ids.data(), distances.data(), sets);
   sets.lists = index.lists();
   sets.probes = index.probes();
   return sets;
@@ -102,9 +106,7 @@ SimilaritySets buildApproximateSimilaritySets(const ExemplarNeighborhoods& n, in
 
 SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& n, int k, int minSeparation) {
   const int count = n.count();
-  SimilaritySets sets;
-  sets.k = std::clamp(k, 1, std::max(1, count));
-  sets.ids.assign(std::size_t(count) * sets.k, 0);
+  SimilaritySets sets = emptySets(n, k);
   const int d = n.reducedDims();
   std::vector<std::pair<float, std::int32_t>> all(count);
   for (int m = 0; m < count; ++m) {
