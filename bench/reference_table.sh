@@ -7,6 +7,7 @@
 #   METHODS: comma list of solid methods (chen-wang, kopf, skeletal) and 2D ones (2d-kwatra, 2d-skeletal),
 #   each optionally with +wavelet for --distance wavelet (e.g. 2d-skeletal+wavelet);
 #   SIZE: the quarters' side, the texture's side and the solid's edge. Run from the repo root after building.
+#   EXTRA_2D (environment): more options for the 2D runs, e.g. EXTRA_2D="--neighborhoods 13".
 set -euo pipefail
 size=$1
 IFS=, read -r -a methods <<< "$2"
@@ -27,7 +28,7 @@ for photo in "$@"; do
     case $base in
       2d-*)
         "$bin" synthesize2d "$out/exemplar.png" -o "$out/t.png" --size "$size" "$size" --method "${base#2d-}" \
-          --distance "$distance" --reference "$out/reference.png" --report "$out/s.json" --quiet > /dev/null
+          ${EXTRA_2D:-} --distance "$distance" --reference "$out/reference.png" --report "$out/s.json" --quiet > /dev/null
         cp "$out/s.json" "$out/c.json" ;;
       *)
         "$bin" synthesize "$out/exemplar.png" -o "$out/v.vdb" --size "$size" --method "$base" \

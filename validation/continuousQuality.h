@@ -14,11 +14,13 @@ struct ContinuousQualityOptions {
   int similaritySide = 8;                    ///< patch side of coherence and completeness
   std::vector<int> distanceSides{4, 8, 16};  ///< patch sides of the patch distribution distance
   std::vector<int> scales{
-      1, 2};              ///< each patch pixel the mean of scale x scale samples: 2 sees coarser structure
-  int patches = 4096;     ///< patches per set, the same for slices and images (fewer if an image holds fewer)
-  int queries = 1024;     ///< of them, how many look for their nearest patch in the other set
-  int directions = 64;    ///< random projections of the sliced Wasserstein distance
-  int histogramBins = 8;  ///< per channel, joint colour histograms
+      1, 2};  ///< each patch pixel the mean of scale x scale samples: 2 sees coarser structure
+  /// Patches per set, the same for slices and images (fewer if an image holds fewer): every patch of
+  /// a 128^2 exemplar, a sample of larger ones.
+  int patches = 16384;
+  int queries = 1024;          ///< of them, how many look for their nearest patch in the other set
+  int directions = 64;         ///< random projections of the sliced Wasserstein distance
+  int histogramBins = 8;       ///< per channel, joint colour histograms
   std::uint64_t seed = 12345;  ///< where the patches lie
 };
 
