@@ -50,7 +50,7 @@ RowMatrix pairwiseSquaredDistances(const ColumnMatrix& a, const Eigen::VectorXf&
 
 /// IndexFlatL2 whose search is a blocked matrix product (Eigen) in parallel (TBB): FAISS's k-means
 /// assigns points through it. Debian's FAISS computes these distances one pair at a time or through
-/// the reference BLAS, several times slower.
+/// the reference BLAS, both slower.
 struct ProductFlatL2 : faiss::IndexFlatL2 {
   using faiss::IndexFlatL2::IndexFlatL2;
 
