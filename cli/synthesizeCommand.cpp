@@ -46,7 +46,8 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--similarity-search", *similaritySearch,
                    "How similarity sets are found: exact (kd-tree), approximate (FAISS inverted file, for "
-                   "large exemplars) or auto (approximate from 16384 neighbourhoods per level)")
+                   "large exemplars) or auto (approximate from " +
+                       std::to_string(o.approximateFrom) + " neighbourhoods per level)")
       ->capture_default_str();
   command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
   command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")

@@ -48,11 +48,11 @@ struct Texture {
 
 /// TextureSynthesisOptions::neighborhoods left empty: Kwatra's sizes shrunk to fit small exemplars.
 std::vector<int> fittedNeighborhoods(const cv::Mat& exemplar, const TextureSynthesisOptions& o) {
+  const int wavelet = o.distance == NeighborhoodDistance::Wavelet ? 1 : 0;  // one more pixel of extent
   std::vector<int> n(std::size_t(o.levels));
   for (int l = 0; l < o.levels; ++l) {
     const int shift = o.levels - 1 - l;
     const int wanted = shift == 0 ? 8 : shift == 1 ? 12 : 16;
-    const int wavelet = o.distance == NeighborhoodDistance::Wavelet ? 1 : 0;
     const int exemplarRoom = std::min(exemplar.cols >> shift, exemplar.rows >> shift) / 2 - wavelet;
     const int outputRoom = std::min(o.width >> shift, o.height >> shift);  // the output wraps around
     n[std::size_t(l)] = std::max(2, std::min({wanted, exemplarRoom, outputRoom}));

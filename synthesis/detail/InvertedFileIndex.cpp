@@ -29,7 +29,7 @@ void limitOpenMpToTbb() {
 template <class IdType>
 void offer(float d, IdType id, int k, int& found, float* distances, IdType* ids) {
   auto before = [](float da, IdType ia, float db, IdType ib) { return da != db ? da < db : ia < ib; };
-  if (found == k && (d > distances[k - 1] || !before(d, id, distances[k - 1], ids[k - 1]))) return;
+  if (found == k && !before(d, id, distances[k - 1], ids[k - 1])) return;
   int i = found < k ? found++ : k - 1;
   for (; i > 0 && before(d, id, distances[i - 1], ids[i - 1]); --i) {
     distances[i] = distances[i - 1];
