@@ -1,8 +1,11 @@
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.h"
+#include "common/Error.h"
 #include "pipeline/synthesizeJob.h"
+#include "pipeline/synthesizeVolumeJob.h"
 
 namespace solidtex::cli {
 
@@ -23,37 +26,102 @@ void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::
       ->capture_default_str();
 }
 
+namespace {
+
+// Options that only one kind of exemplar uses; the other kind refuses them when given.
+struct ExemplarKindOptions {
+  std::vector<CLI::Option*> photoOnly, volumeOnly;
+};
+
+void refuseOptionsOf(const std::vector<CLI::Option*>& options, const std::string& kind) {
+  for (const CLI::Option* option : options)
+    if (option->count() > 0) throw InputError(option->get_name() + " applies to " + kind + " exemplars only");
+}
+
+// Volume exemplars (Su 2008): the options only they have, written into `job`.
+void addVolumeOptions(CLI::App& command, SynthesizeVolumeJob& job, std::vector<int>& dims,
+                      std::vector<int>& region, ExemplarKindOptions& kinds) {
+  VolumeSynthesisOptions& v = job.synthesis;
+  kinds.volumeOnly = {
+      command.add_option("--dims", dims, "Volume exemplars: output voxels X Y Z (instead of --size)")
+          ->expected(3),
+      command.add_option(
+          "--field", job.field,
+          "Volume exemplars: steer the exemplar's axes by circle, oval, slant, zigzag, slant3d or a "
+          ".vdb with Vec3s grids axis_x, axis_y, axis_z"),
+      command.add_option("--jitter", v.jitter, "Volume exemplars: jitter strength r per level (0-2)")
+          ->capture_default_str(),
+      command
+          .add_option("--exclusion", v.exclusion,
+                      "Volume exemplars: similarity set members keep this cube apart")
+          ->capture_default_str(),
+      command
+          .add_option("--appearance", v.window,
+                      "Volume exemplars: side of the appearance neighbourhoods (odd)")
+          ->capture_default_str(),
+      command.add_option("--corrections", v.corrections, "Volume exemplars: correction passes per level")
+          ->capture_default_str(),
+      command
+          .add_option(
+              "--region", region,
+              "Volume exemplars: write only the box X0 Y0 Z0 X1 Y1 Z1 (voxels [X0,X1) ...), identical "
+              "to that box of the whole volume")
+          ->expected(6)};
+}
+
+}  // namespace
+
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   auto job = std::make_shared<SynthesizeJob>();
-  job->commandLine = commandLine;
+  auto volumeJob = std::make_shared<SynthesizeVolumeJob>();
+  job->commandLine = volumeJob->commandLine = commandLine;
   auto method = std::make_shared<std::string>("chen-wang");
   auto distance = std::make_shared<std::string>("rgb");
   auto similaritySearch = std::make_shared<std::string>("auto");
+  auto dims = std::make_shared<std::vector<int>>();
+  auto region = std::make_shared<std::vector<int>>();
+  auto kinds = std::make_shared<ExemplarKindOptions>();
   SynthesisOptions& o = job->synthesis;
-  CLI::App* command =
-      app.add_subcommand("synthesize", "Make a continuous solid (.vdb) from an exemplar without particles");
-  command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR)")->required();
+  CLI::App* command = app.add_subcommand("synthesize",
+                                         "Make a continuous solid (.vdb) from an exemplar without particles: "
+                                         "a photo (Chen-Wang, Kopf, skeletal) or "
+                                         "a volume (.vdb, Su 2008 appearance-space pyramid synthesis)");
+  command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR) or volume (.vdb)")
+      ->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
   command
-      ->add_option(
-          "--method", *method,
-          "chen-wang (histogram matching), kopf (baseline) or skeletal (chen-wang on the Haar skeleton, "
-          "finer levels rebuilt from wavelet details)")
+      ->add_option("--method", *method,
+                   "Photo exemplars: chen-wang (histogram matching), kopf (baseline) or skeletal (chen-wang "
+                   "on the Haar "
+                   "skeleton, finer levels rebuilt from wavelet details)")
       ->capture_default_str();
   command->add_option("--size", o.size, "Edge of the cubic volume in voxels (2-1024)")->capture_default_str();
   addPyramidOptions(*command, o.levels, o.waveletLevels, o.neighborhoods, *distance);
-  command->add_option("--k", o.k, "k-coherence similarity set size (1-64)")->capture_default_str();
+  command->get_option("--levels")
+      ->description(
+          "Multi-resolution levels (1-8; volume exemplars: corrected levels, default as many as fit)");
+  command->add_option("--k", o.k, "k-coherence similarity set size (1-64; volume exemplars: 3)")
+      ->capture_default_str();
   command
-      ->add_option("--similarity-search", *similaritySearch,
-                   "How similarity sets are found: exact (kd-tree), approximate (FAISS inverted file, for "
-                   "large exemplars) or auto (approximate from " +
-                       std::to_string(o.approximateFrom) + " neighbourhoods per level)")
+      ->add_option(
+          "--similarity-search", *similaritySearch,
+          "Photo exemplars: how similarity sets are found: exact (kd-tree), approximate (FAISS inverted "
+          "file, for large exemplars) or auto (approximate from " +
+              std::to_string(o.approximateFrom) + " neighbourhoods per level)")
       ->capture_default_str();
-  command->add_option("--iterations", o.iterations, "Iterations per level (1-100)")->capture_default_str();
-  command->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512)")
+  command->add_option("--iterations", o.iterations, "Photo exemplars: iterations per level (1-100)")
       ->capture_default_str();
-  command->add_option("--control", job->control, "Greyscale map the exemplar's size: brighter appears more")
+  command
+      ->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512; volume exemplars: 16)")
+      ->capture_default_str();
+  command
+      ->add_option("--control", job->control,
+                   "Photo exemplars: greyscale map the exemplar's size: brighter appears more")
       ->check(CLI::ExistingFile);
+  addVolumeOptions(*command, *volumeJob, *dims, *region, *kinds);
+  for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
+                           "--similarity-search", "--iterations", "--control"})
+    kinds->photoOnly.push_back(command->get_option(name));
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
@@ -61,7 +129,33 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_flag("!--quiet", job->progress, "No progress line");
   command->add_flag("!--no-quality", job->measure,
                     "Do not measure the result against the exemplar (the report's quality)");
-  return [job, method, distance, similaritySearch] {
+  return [job, volumeJob, method, distance, similaritySearch, dims, region, kinds, command] {
+    const SynthesisOptions& o = job->synthesis;  // as parsed
+    if (std::filesystem::path(job->exemplar).extension() == ".vdb") {
+      refuseOptionsOf(kinds->photoOnly, "photo");
+      SynthesizeVolumeJob& v = *volumeJob;
+      v.exemplar = job->exemplar;
+      v.output = job->output;
+      v.synthesis.dims =
+          dims->empty() ? Dims{o.size, o.size, o.size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
+      if (!region->empty())
+        v.synthesis.region =
+            VoxelBox{{(*region)[0], (*region)[1], (*region)[2]}, {(*region)[3], (*region)[4], (*region)[5]}};
+      if (command->get_option("--levels")->count() > 0) v.synthesis.levels = o.levels;
+      if (command->get_option("--k")->count() > 0) v.synthesis.k = o.k;
+      if (command->get_option("--pca-dims")->count() > 0) v.synthesis.pcaDims = o.pcaDims;
+      v.synthesis.seed = o.seed;
+      v.synthesis.threads = o.threads;
+      v.report = job->report;
+      v.preview = job->preview;
+      v.progress = job->progress;
+      v.measure = job->measure;
+      runSynthesizeVolume(v);
+      std::cout << v.output << ": " << v.synthesis.dims.x << "x" << v.synthesis.dims.y << "x"
+                << v.synthesis.dims.z << " voxels from a volume exemplar\n";
+      return 0;
+    }
+    refuseOptionsOf(kinds->volumeOnly, "volume (.vdb)");
     job->synthesis.method = parseMethod(*method);
     job->synthesis.distance = parseDistance(*distance);
     job->synthesis.similaritySearch = parseSimilaritySearch(*similaritySearch);

@@ -14,6 +14,15 @@
 
 namespace solidtex {
 
+void checkOutputPath(const std::string& path, const std::string& extension) {
+  namespace fs = std::filesystem;
+  const fs::path out(path);
+  if (out.extension() != extension) throw InputError("output " + path + " must end in " + extension);
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent))
+    throw InputError("cannot write " + path + ": folder " + parent.string() + " does not exist");
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::json& json) {
   namespace fs = std::filesystem;
   const fs::path target(path);

@@ -7,6 +7,9 @@
 
 namespace solidtex {
 
+/// Refuses (InputError) an output path without the given extension (".vdb") or in a missing folder.
+void checkOutputPath(const std::string& path, const std::string& extension);
+
 /// Writes JSON to `path` through a temporary name, so no partial report is ever left.
 void writeJsonFile(const std::string& path, const nlohmann::json& json);
 

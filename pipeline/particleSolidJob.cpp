@@ -31,12 +31,7 @@ void checkJob(const ParticleSolidJob& job) {
   if (job.particles.views < 3 || job.particles.views > 5) throw InputError("--views must be 3, 4 or 5");
   if (job.particles.shapes < 1 || job.particles.shapes > 4096)
     throw InputError("--shapes must be in [1, 4096]");
-  namespace fs = std::filesystem;
-  const fs::path out(job.output);
-  if (out.extension() != ".vdb") throw InputError("output " + job.output + " must end in .vdb");
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent))
-    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  checkOutputPath(job.output, ".vdb");
 }
 
 double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {

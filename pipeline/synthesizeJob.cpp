@@ -77,12 +77,7 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
 
 nlohmann::json runSynthesize(const SynthesizeJob& job) {
   namespace fs = std::filesystem;
-  if (fs::path(job.output).extension() != ".vdb")
-    throw InputError("output " + job.output + " must end in .vdb");
-  const fs::path parent =
-      fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
-  if (!fs::is_directory(parent))
-    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  checkOutputPath(job.output, ".vdb");
 
   const cv::Mat exemplar = loadPhoto(job.exemplar);
   SynthesisOptions options = job.synthesis;

@@ -32,12 +32,7 @@ nlohmann::json levelsJson(const TextureSynthesisResult& r) {
 
 nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   namespace fs = std::filesystem;
-  if (fs::path(job.output).extension() != ".png")
-    throw InputError("output " + job.output + " must end in .png");
-  const fs::path parent =
-      fs::path(job.output).has_parent_path() ? fs::path(job.output).parent_path() : fs::path(".");
-  if (!fs::is_directory(parent))
-    throw InputError("cannot write " + job.output + ": folder " + parent.string() + " does not exist");
+  checkOutputPath(job.output, ".png");
   const cv::Mat exemplar = loadPhoto(job.exemplar);
   const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
   ProgressLine progress(job.progress);

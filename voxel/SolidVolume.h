@@ -12,8 +12,9 @@ namespace solidtex {
 using Rgb = std::array<float, 3>;
 
 /// A solid texture in dense working form, x fastest (Dims::index). Written to .vdb as DESIGN.md says:
-/// `density` (FloatGrid, fog), `color` and `Cd` (Vec3SGrid, linear RGB, active over the whole box),
-/// `particle_id` (Int32Grid) and `source_position` (Vec3SGrid) when present.
+/// `density` (FloatGrid, fog), `color` and `Cd` (Vec3SGrid, linear RGB, active over the whole box;
+/// left out when empty, as for a solid made from a density volume), `particle_id` (Int32Grid),
+/// `source_position` and `source` (Vec3SGrid) when present.
 struct SolidVolume {
   Dims dims;
   std::vector<float> density;            ///< dims.count(); empty: 1 on particles, or everywhere without them
@@ -21,7 +22,8 @@ struct SolidVolume {
   std::vector<std::int32_t> particleId;  ///< dims.count() or empty; 0 background, 1..P particles
   std::vector<std::array<float, 2>>
       sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
-  std::map<std::string, std::string> metadata;  ///< file metadata: command line, seed, exemplar, ...
+  std::vector<std::array<float, 3>> sourceVoxel;  ///< dims.count() or empty; exemplar voxel each voxel copies
+  std::map<std::string, std::string> metadata;    ///< file metadata: command line, seed, exemplar, ...
 };
 
 }  // namespace solidtex

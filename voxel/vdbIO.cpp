@@ -12,6 +12,7 @@
 #include <openvdb/tools/Dense.h>
 
 #include "common/Error.h"
+#include "voxel/writeVdbGrids.h"
 
 namespace solidtex {
 namespace {
@@ -75,15 +76,17 @@ openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   openvdb::GridPtrVec grids;
   grids.push_back(densityGrid(volume, ids, xform));
   release(volume.density);
-  // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
-  auto color =
-      sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
-  release(volume.color);
-  color->setVectorType(openvdb::VEC_INVARIANT);
-  grids.push_back(color);
-  auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
-  cd->setName("Cd");
-  grids.push_back(cd);
+  if (!volume.color.empty()) {
+    // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
+    auto color =
+        sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+    release(volume.color);
+    color->setVectorType(openvdb::VEC_INVARIANT);
+    grids.push_back(color);
+    auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
+    cd->setName("Cd");
+    grids.push_back(cd);
+  }
   if (ids) grids.push_back(ids);
   if (!volume.sourcePosition.empty()) {
     std::vector<Rgb> positions(volume.sourcePosition.size());
@@ -92,6 +95,11 @@ openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
     release(volume.sourcePosition);
     grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
                                                    "source_position", xform));
+  }
+  if (!volume.sourceVoxel.empty()) {
+    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.sourceVoxel, openvdb::Vec3s(-1.f),
+                                                   "source", xform));
+    release(volume.sourceVoxel);
   }
   return grids;
 }
@@ -133,19 +141,14 @@ void stampContentUuid(const std::filesystem::path& file) {
 
 }  // namespace
 
-void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
-  openvdb::initialize();
-  if (volume.color.size() != volume.dims.count())
-    throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
-  openvdb::MetaMap meta;
-  for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
+void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
   try {
     openvdb::io::File file(temp.string());
     file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-    file.write(gridsOf(volume, voxelSize), meta);
+    file.write(grids, meta);
     file.close();
     stampContentUuid(temp);
   } catch (const std::exception& e) {
@@ -160,6 +163,15 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
     fs::remove(temp, ec);
     throw InputError("cannot write " + path + ": " + ec.message());
   }
+}
+
+void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
+  openvdb::initialize();
+  if ((!volume.color.empty() || volume.density.empty()) && volume.color.size() != volume.dims.count())
+    throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
+  openvdb::MetaMap meta;
+  for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
+  writeVdbGrids(path, gridsOf(volume, voxelSize), meta);
 }
 
 namespace {

@@ -1,0 +1,175 @@
+#include "pipeline/synthesizeVolumeJob.h"
+
+#include <filesystem>
+#include <utility>
+
+#include <opencv2/core.hpp>
+
+#include "Version.h"
+#include "common/Error.h"
+#include "common/srgb.h"
+#include "pipeline/jobSupport.h"
+#include "voxel/vdbIO.h"
+#include "voxel/writePreviews.h"
+
+namespace solidtex {
+namespace {
+
+std::optional<FrameField> loadField(const SynthesizeVolumeJob& job) {
+  if (!job.field) return std::nullopt;
+  if (std::filesystem::path(*job.field).extension() == ".vdb")
+    return readFrameField(*job.field, job.synthesis.dims);
+  return builtinFrameField(*job.field, job.synthesis.dims);
+}
+
+// What a person looks at: densities as grey levels, colours as they are.
+std::vector<Rgb> displayColors(const DenseVolume& v) {
+  std::vector<Rgb> out(v.dims.count());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const float* x = &v.values[i * std::size_t(v.channels)];
+    out[i] = v.channels == 3 ? Rgb{x[0], x[1], x[2]}
+                             : Rgb{srgbToLinear(x[0]), srgbToLinear(x[0]), srgbToLinear(x[0])};
+  }
+  return out;
+}
+
+// The exemplar's middle z slice in sRGB, shown beside the solid's slices.
+cv::Mat middleSlice(const DenseVolume& exemplar) {
+  const std::vector<Rgb> colors = displayColors(exemplar);
+  cv::Mat out(exemplar.dims.y, exemplar.dims.x, CV_32FC3);
+  const int k = exemplar.dims.z / 2;
+  for (int j = 0; j < exemplar.dims.y; ++j)
+    for (int i = 0; i < exemplar.dims.x; ++i) {
+      const Rgb& c = colors[exemplar.dims.index(i, j, k)];
+      out.at<cv::Vec3f>(j, i) = {linearToSrgb(c[0]), linearToSrgb(c[1]), linearToSrgb(c[2])};
+    }
+  return out;
+}
+
+SolidVolume solidOf(VolumeSynthesisResult&& result) {
+  SolidVolume solid;
+  solid.dims = result.values.dims;
+  if (result.values.channels == 3) {
+    solid.color.resize(solid.dims.count());
+    for (std::size_t i = 0; i < solid.color.size(); ++i)
+      solid.color[i] = {result.values.values[3 * i], result.values.values[3 * i + 1],
+                        result.values.values[3 * i + 2]};
+  } else {
+    solid.density = std::move(result.values.values);
+  }
+  solid.sourceVoxel = std::move(result.source);
+  return solid;
+}
+
+nlohmann::json levelReports(const VolumeSynthesisStatistics& stats) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t l = 0; l < stats.levels.size(); ++l) {
+    const VolumeLevelStatistics& s = stats.levels[l];
+    nlohmann::json entry = {{"level", l + 1},
+                            {"spacing", s.spacing},
+                            {"voxels", {s.window.x, s.window.y, s.window.z}},
+                            {"corrected", s.corrected},
+                            {"seconds", s.seconds}};
+    if (s.corrected) {
+      entry["appearance_dims"] = s.appearanceDims;
+      entry["pca_kept_variance"] = s.keptVariance;
+      entry["similarity_fallback_share"] = s.similarityFallbackShare;
+      entry["analysis_seconds"] = s.analysisSeconds;
+    }
+    levels.push_back(entry);
+  }
+  return levels;
+}
+
+nlohmann::json volumeQualityJson(const VolumeQuality& q) {
+  return {{"coherence", q.coherence},
+          {"completeness", q.completeness},
+          {"shuffled_coherence", q.shuffledCoherence},
+          {"shuffled_completeness", q.shuffledCompleteness},
+          {"coherence_ratio", q.coherenceRatio()},
+          {"completeness_ratio", q.completenessRatio()},
+          {"slice_coherence", q.sliceCoherence},
+          {"slice_completeness", q.sliceCompleteness},
+          {"shuffled_slice_coherence", q.shuffledSliceCoherence},
+          {"shuffled_slice_completeness", q.shuffledSliceCompleteness},
+          {"slice_coherence_ratio", q.sliceCoherenceRatio()},
+          {"value_wasserstein", q.valueWasserstein},
+          {"exact_share", q.exactShare},
+          {"seconds", q.seconds}};
+}
+
+}  // namespace
+
+DenseVolume readVolumeExemplar(const std::string& path) {
+  SolidVolume v = readVdb(path);
+  DenseVolume out;
+  out.dims = v.dims;
+  if (!v.color.empty()) {
+    out.channels = 3;
+    out.values.resize(v.color.size() * 3);
+    for (std::size_t i = 0; i < v.color.size(); ++i) std::copy_n(v.color[i].data(), 3, &out.values[3 * i]);
+  } else {
+    out.values = std::move(v.density);
+  }
+  return out;
+}
+
+nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
+  namespace fs = std::filesystem;
+  checkOutputPath(job.output, ".vdb");
+
+  const ThreadLimit threads(job.synthesis.threads);
+  const DenseVolume exemplar = readVolumeExemplar(job.exemplar);
+  const std::optional<FrameField> field = loadField(job);
+  VolumeSynthesisOptions options = job.synthesis;
+  options.field = field ? &*field : nullptr;
+  ProgressLine progress(job.progress);
+  if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
+  VolumeSynthesisResult result = synthesizeFromVolume(exemplar, options);
+  progress.done();
+
+  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
+                           {"command", "synthesize"},
+                           {"method", "su-volume"},
+                           {"exemplar",
+                            {{"name", fs::path(job.exemplar).filename().string()},
+                             {"dims", {exemplar.dims.x, exemplar.dims.y, exemplar.dims.z}},
+                             {"channels", exemplar.channels},
+                             {"domain", result.statistics.domain}}},
+                           {"dims", {options.dims.x, options.dims.y, options.dims.z}},
+                           {"field", job.field.value_or("none")},
+                           {"jitter", options.jitter},
+                           {"k", options.k},
+                           {"exclusion", options.exclusion},
+                           {"appearance", options.window},
+                           {"pca_dims", options.pcaDims},
+                           {"corrections", options.corrections},
+                           {"seed", options.seed}};
+  const VoxelBox& box = result.box;
+  if (options.region) report["region"] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
+  report["level_reports"] = levelReports(result.statistics);
+  report["analysis_seconds"] = result.statistics.analysisSeconds;
+  report["seconds"] = result.statistics.seconds;
+  if (job.measure) {
+    progress.update("measuring the volume against the exemplar");
+    report["quality"] = volumeQualityJson(measureVolumeQuality(result.values, exemplar, job.quality));
+    progress.done();
+  }
+  SolidVolume solid = solidOf(std::move(result));
+  solid.metadata = {{"solidtex_version", SOLIDTEX_VERSION},
+                    {"command_line", job.commandLine},
+                    {"seed", std::to_string(options.seed)},
+                    {"exemplar", fs::path(job.exemplar).filename().string()}};
+  report["outputs"] = {{"vdb", job.output}};
+  if (job.preview) {
+    SolidVolume view = solid;
+    if (view.color.empty()) view.color = displayColors(DenseVolume{view.dims, 1, view.density});
+    report["outputs"]["previews"] = writePreviews(*job.preview, middleSlice(exemplar), view);
+  }
+  writeVdb(job.output, std::move(solid));
+  report["peak_memory_mib"] = peakMemoryMiB();
+  if (job.report) writeJsonFile(*job.report, report);
+  return report;
+}
+
+}  // namespace solidtex

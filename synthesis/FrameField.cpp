@@ -1,0 +1,218 @@
+#include "synthesis/FrameField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+#include <system_error>
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Dense.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "common/Error.h"
+#include "voxel/writeVdbGrids.h"
+
+namespace solidtex {
+namespace {
+
+const char* const kAxisGridNames[3] = {"axis_x", "axis_y", "axis_z"};
+
+void requirePositive(const Dims& dims, const std::string& what) {
+  if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0)
+    throw InputError(what + ": the field's size must be positive, not " + std::to_string(dims.x) + "x" +
+                     std::to_string(dims.y) + "x" + std::to_string(dims.z));
+}
+
+/// A rotation about z by `radians`: exemplar x -> (cos, sin, 0), exemplar y -> (-sin, cos, 0).
+Eigen::Matrix3f turnXY(double radians) {
+  return Eigen::AngleAxisf(float(radians), Eigen::Vector3f::UnitZ()).toRotationMatrix();
+}
+
+/// The frame whose exemplar y axis is `normal` (in the XY plane, not normalised), x = y rotated -90
+/// degrees (so x cross y = z), z = z. Identity for a zero normal.
+Eigen::Matrix3f frameWithNormal(double nx, double ny) {
+  const double length = std::hypot(nx, ny);
+  if (length == 0) return Eigen::Matrix3f::Identity();
+  const float cx = float(nx / length), cy = float(ny / length);
+  Eigen::Matrix3f m;
+  m << cy, cx, 0,  //
+      -cx, cy, 0,  //
+      0, 0, 1;
+  return m;
+}
+
+/// Fills `field` slice by slice from `frame(i, j, k)`.
+template <typename Frame>
+FrameField fill(const Dims& dims, Frame frame) {
+  FrameField field;
+  field.dims = dims;
+  field.axes.resize(dims.count());
+  tbb::parallel_for(tbb::blocked_range<int>(0, dims.z), [&](const tbb::blocked_range<int>& ks) {
+    for (int k = ks.begin(); k < ks.end(); ++k)
+      for (int j = 0; j < dims.y; ++j)
+        for (int i = 0; i < dims.x; ++i) field.axes[dims.index(i, j, k)] = frame(i, j, k);
+  });
+  return field;
+}
+
+openvdb::CoordBBox boxOf(const Dims& dims) {
+  return openvdb::CoordBBox(openvdb::Coord(0, 0, 0), openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
+}
+
+using DenseVec3 = openvdb::tools::Dense<openvdb::Vec3s, openvdb::tools::LayoutXYZ>;
+
+std::string voxelName(const Voxel& v) {
+  return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + "," + std::to_string(v.z) + ")";
+}
+
+enum class FrameProblem { None, ZeroAxis, Parallel };
+
+/// The rotation nearest to the frame `m` (columns normalised; left-handed: exemplar z negated): the polar
+/// factor a (a^T a)^(-1/2), from the eigen decomposition of a^T a (the squared singular values).
+FrameProblem orthonormalise(const Eigen::Matrix3f& m, Eigen::Matrix3f& out) {
+  Eigen::Matrix3d a = m.cast<double>();
+  if (!a.allFinite()) return FrameProblem::ZeroAxis;
+  for (int c = 0; c < 3; ++c) {
+    const double length = a.col(c).norm();
+    if (length < 1e-6) return FrameProblem::ZeroAxis;
+    a.col(c) /= length;
+  }
+  if (a.determinant() < 0) a.col(2) = -a.col(2);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a.transpose() * a);
+  const Eigen::Vector3d squared = eigen.eigenvalues();  // ascending
+  if (eigen.info() != Eigen::Success || !(squared(0) >= 1e-6)) return FrameProblem::Parallel;
+  const Eigen::Matrix3d& v = eigen.eigenvectors();
+  out = (a * v * squared.cwiseSqrt().cwiseInverse().asDiagonal() * v.transpose()).cast<float>();
+  return FrameProblem::None;
+}
+
+}  // namespace
+
+const std::vector<std::string>& builtinFrameFieldNames() {
+  static const std::vector<std::string> names{"circle", "oval", "slant", "zigzag", "slant3d"};
+  return names;
+}
+
+FrameField builtinFrameField(const std::string& name, const Dims& dims) {
+  requirePositive(dims, "frame field \"" + name + "\"");
+  const double cx = (dims.x - 1) / 2.0, cy = (dims.y - 1) / 2.0;
+  constexpr double kQuarterPi = std::numbers::pi / 4;
+  if (name == "circle") return fill(dims, [&](int i, int j, int) { return frameWithNormal(i - cx, j - cy); });
+  if (name == "oval")  // the normal of (dx / 2)^2 + dy^2: (dx / 4, dy), scaled by 4
+    return fill(dims, [&](int i, int j, int) { return frameWithNormal(i - cx, 4 * (j - cy)); });
+  if (name == "slant") {
+    const Eigen::Matrix3f turn = turnXY(kQuarterPi);
+    return fill(dims, [&](int, int, int) { return turn; });
+  }
+  if (name == "zigzag") {
+    const int half = std::max(4, int(std::lround(dims.x / 8.0)));
+    const Eigen::Matrix3f up = turnXY(kQuarterPi), down = turnXY(-kQuarterPi);
+    return fill(dims, [&](int i, int, int) { return (i / half) % 2 == 0 ? up : down; });
+  }
+  if (name == "slant3d") {
+    const Eigen::Matrix3f tilt =
+        Eigen::AngleAxisf(float(kQuarterPi), Eigen::Vector3f(1, 1, 0).normalized()).toRotationMatrix();
+    return fill(dims, [&](int, int, int) { return tilt; });
+  }
+  std::string valid;
+  for (const auto& n : builtinFrameFieldNames()) valid += (valid.empty() ? "" : ", ") + n;
+  throw InputError("unknown frame field \"" + name + "\" (valid: " + valid + ")");
+}
+
+FrameField readFrameField(const std::string& path, const Dims& dims) {
+  requirePositive(dims, "cannot read " + path);
+  openvdb::initialize();
+  if (!std::filesystem::exists(path)) throw InputError("cannot read " + path + ": no such file");
+  openvdb::Vec3SGrid::Ptr grids[3];
+  try {
+    openvdb::io::File file(path);
+    file.open();
+    for (int a = 0; a < 3; ++a) {
+      if (!file.hasGrid(kAxisGridNames[a]))
+        throw InputError("cannot read " + path + ": no grid \"" + kAxisGridNames[a] +
+                         "\" (a frame field needs Vec3SGrids axis_x, axis_y and axis_z)");
+      grids[a] = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid(kAxisGridNames[a]));
+      if (!grids[a])
+        throw InputError("cannot read " + path + ": grid \"" + kAxisGridNames[a] + "\" is not a Vec3SGrid");
+    }
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    throw InputError("cannot read " + path + ": " + e.what());
+  }
+
+  FrameField field;
+  field.dims = dims;
+  field.axes.assign(dims.count(), Eigen::Matrix3f::Zero());
+  {
+    std::vector<openvdb::Vec3s> dense(dims.count());
+    for (int a = 0; a < 3; ++a) {
+      DenseVec3 wrapper(boxOf(dims), dense.data());
+      openvdb::tools::copyToDense(*grids[a], wrapper);
+      grids[a].reset();
+      for (std::size_t v = 0; v < dense.size(); ++v)
+        field.axes[v].col(a) = Eigen::Vector3f(dense[v].x(), dense[v].y(), dense[v].z());
+    }
+  }
+
+  // The first bad voxel of each slice, so the error names the same voxel whatever the threads.
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> firstBad(std::size_t(dims.z), kNone);
+  std::vector<FrameProblem> problems(std::size_t(dims.z), FrameProblem::None);
+  tbb::parallel_for(tbb::blocked_range<int>(0, dims.z), [&](const tbb::blocked_range<int>& ks) {
+    for (int k = ks.begin(); k < ks.end(); ++k) {
+      const std::size_t begin = dims.index(0, 0, k), end = begin + std::size_t(dims.x) * std::size_t(dims.y);
+      for (std::size_t v = begin; v < end; ++v) {
+        Eigen::Matrix3f rotation;
+        const FrameProblem problem = orthonormalise(field.axes[v], rotation);
+        if (problem != FrameProblem::None) {
+          firstBad[std::size_t(k)] = v;
+          problems[std::size_t(k)] = problem;
+          break;
+        }
+        field.axes[v] = rotation;
+      }
+    }
+  });
+  for (int k = 0; k < dims.z; ++k)
+    if (firstBad[std::size_t(k)] != kNone)
+      throw InputError("cannot read " + path + ": the frame at voxel " +
+                       voxelName(dims.voxel(firstBad[std::size_t(k)])) +
+                       (problems[std::size_t(k)] == FrameProblem::ZeroAxis
+                            ? " has an axis of (near) zero length"
+                            : " is degenerate (its axes are parallel or coplanar)"));
+  return field;
+}
+
+void writeFrameField(const std::string& path, const FrameField& field) {
+  openvdb::initialize();
+  const Dims& dims = field.dims;
+  requirePositive(dims, "cannot write " + path);
+  if (field.axes.size() != dims.count())
+    throw std::logic_error("writeFrameField: the axes do not match the field's dimensions");
+  auto xform = openvdb::math::Transform::createLinearTransform(1.0);
+  openvdb::GridPtrVec grids;
+  std::vector<openvdb::Vec3s> dense(dims.count());
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t v = 0; v < dense.size(); ++v) {
+      const auto& c = field.axes[v].col(a);
+      dense[v] = openvdb::Vec3s(c.x(), c.y(), c.z());
+    }
+    auto grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.f));
+    // A negative tolerance keeps every voxel active, zero vectors included.
+    openvdb::tools::copyFromDense(DenseVec3(boxOf(dims), dense.data()), *grid, openvdb::Vec3s(-1.f));
+    grid->setName(kAxisGridNames[a]);
+    grid->setTransform(xform);
+    grid->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
+    grids.push_back(grid);
+  }
+  writeVdbGrids(path, grids);
+}
+
+}  // namespace solidtex

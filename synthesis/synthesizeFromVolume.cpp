@@ -1,0 +1,386 @@
+#include "synthesis/synthesizeFromVolume.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "common/Error.h"
+#include "common/Random.h"
+#include "common/secondsSince.h"
+#include "synthesis/detail/AppearanceSpace.h"
+
+namespace solidtex {
+namespace {
+
+using synthesis::AppearanceLevel;
+using synthesis::ExemplarDomain;
+using Coord = std::array<int, 3>;  // a domain voxel
+using Frame = Eigen::Matrix3f;     // columns: the output directions of the exemplar axes
+
+// Synthesis works on coordinates: each voxel of a level holds the domain voxel it copies.
+struct CoordinateGrid {
+  Voxel lo;  // the window's first voxel, in the level's coordinates
+  Dims dims;
+  std::vector<std::array<std::int16_t, 3>> coords;
+
+  bool holds(int x, int y, int z) const { return dims.contains(x - lo.x, y - lo.y, z - lo.z); }
+  std::size_t index(int x, int y, int z) const { return dims.index(x - lo.x, y - lo.y, z - lo.z); }
+  // Reads outside the window clamp to it, as reads outside the volume clamp to the volume.
+  Coord clampedAt(int x, int y, int z) const {
+    const auto& c =
+        coords[dims.index(std::clamp(x - lo.x, 0, dims.x - 1), std::clamp(y - lo.y, 0, dims.y - 1),
+                          std::clamp(z - lo.z, 0, dims.z - 1))];
+    return {c[0], c[1], c[2]};
+  }
+  void set(std::size_t i, const Coord& c) {
+    coords[i] = {std::int16_t(c[0]), std::int16_t(c[1]), std::int16_t(c[2])};
+  }
+};
+
+// The level plan: spacing, level dims and the window each level must synthesise.
+struct LevelPlan {
+  int spacing = 1;
+  Dims dims;            // the whole level
+  VoxelBox window;      // what is synthesised
+  int appearance = -1;  // index into the appearance levels; -1 = not corrected
+};
+
+int ceilDiv(int a, int b) { return (a + b - 1) / b; }
+
+// A corrected voxel reads voxels up to 2 away, 8 subpasses a pass, each on values the earlier ones
+// wrote: wrong values at a window's edge travel at most this far inwards during a level.
+int correctionReach(int corrections) { return corrections * 8 * 2; }
+
+std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBox& region, int corrected) {
+  const int finest = std::max({o.dims.x, o.dims.y, o.dims.z});
+  int top = 0;
+  while ((1 << top) < finest) ++top;
+  std::vector<LevelPlan> plan(std::size_t(top) + 1);
+  VoxelBox need = region;
+  for (int l = top; l >= 0; --l) {
+    LevelPlan& level = plan[std::size_t(l)];
+    level.spacing = 1 << (top - l);
+    level.dims = {ceilDiv(o.dims.x, level.spacing), ceilDiv(o.dims.y, level.spacing),
+                  ceilDiv(o.dims.z, level.spacing)};
+    const int finestFirst = top - l;
+    level.appearance = finestFirst < corrected ? finestFirst : -1;
+    const int margin = level.appearance >= 0 ? correctionReach(o.corrections) : 0;
+    level.window.lo = {std::max(need.lo.x - margin, 0), std::max(need.lo.y - margin, 0),
+                       std::max(need.lo.z - margin, 0)};
+    level.window.hi = {std::min(need.hi.x + margin, level.dims.x), std::min(need.hi.y + margin, level.dims.y),
+                       std::min(need.hi.z + margin, level.dims.z)};
+    need.lo = {level.window.lo.x / 2, level.window.lo.y / 2, level.window.lo.z / 2};
+    need.hi = {ceilDiv(level.window.hi.x, 2), ceilDiv(level.window.hi.y, 2), ceilDiv(level.window.hi.z, 2)};
+  }
+  return plan;
+}
+
+// The frame steering level voxel (x,y,z): the field at the centre of the finest voxels it covers.
+Frame frameAt(const VolumeSynthesisOptions& o, const LevelPlan& level, int x, int y, int z) {
+  if (!o.field) return Frame::Identity();
+  const int half = level.spacing / 2;
+  return o.field->at(std::min(x * level.spacing + half, o.dims.x - 1),
+                     std::min(y * level.spacing + half, o.dims.y - 1),
+                     std::min(z * level.spacing + half, o.dims.z - 1));
+}
+
+Coord wrapped(const ExemplarDomain& domain, Coord c) {
+  for (int a = 0; a < 3; ++a) c[std::size_t(a)] = domain.wrap(a, c[std::size_t(a)]);
+  return c;
+}
+
+Coord shifted(const ExemplarDomain& domain, const Coord& c, const Eigen::Vector3f& offset) {
+  return wrapped(domain, {c[0] + int(std::lround(offset.x())), c[1] + int(std::lround(offset.y())),
+                          c[2] + int(std::lround(offset.z()))});
+}
+
+// Eq. 2's hash H: a fixed function of the level and the voxel, in [-1, 1]^3.
+Eigen::Vector3f hashJitter(std::uint64_t seed, int level, const LevelPlan& plan, int x, int y, int z) {
+  const std::uint64_t h = deriveSeed(seed, std::uint64_t(level), std::uint64_t(plan.dims.index(x, y, z)));
+  auto unit = [&](int part) {
+    return float(double((h >> (21 * part)) & 0x1fffff) / double(0x1fffff) * 2 - 1);
+  };
+  return {unit(0), unit(1), unit(2)};
+}
+
+// Eq. 1 (and 5 under a field) followed by eq. 2: children take the parent's coordinate plus their
+// offset at this level's spacing, then a jitter of up to r x spacing.
+CoordinateGrid upsample(const CoordinateGrid* parent, const ExemplarDomain& domain,
+                        const VolumeSynthesisOptions& o, const LevelPlan& level, int levelIndex) {
+  CoordinateGrid grid{level.window.lo, level.window.dims(), {}};
+  grid.coords.resize(grid.dims.count());
+  const float h = float(level.spacing);
+  tbb::parallel_for(level.window.lo.z, level.window.hi.z, [&](int z) {
+    for (int y = level.window.lo.y; y < level.window.hi.y; ++y)
+      for (int x = level.window.lo.x; x < level.window.hi.x; ++x) {
+        Coord c{0, 0, 0};
+        Eigen::Vector3f offset = Eigen::Vector3f::Zero();
+        if (parent) {
+          c = parent->clampedAt(x / 2, y / 2, z / 2);
+          const Eigen::Vector3f child(float(x % 2) - 0.5f, float(y % 2) - 0.5f, float(z % 2) - 0.5f);
+          offset = h * (frameAt(o, level, x, y, z).transpose() * child) + Eigen::Vector3f::Constant(0.5f * h);
+        }
+        offset += float(o.jitter) * h * hashJitter(o.seed, levelIndex, level, x, y, z);
+        grid.set(grid.index(x, y, z), shifted(domain, c, offset));
+      }
+  });
+  return grid;
+}
+
+constexpr int kDiagonals = 8;
+
+Eigen::Vector3f diagonal(int d) { return {d & 1 ? 1.f : -1.f, d & 2 ? 1.f : -1.f, d & 4 ? 1.f : -1.f}; }
+
+// The offsets a voxel reads for each diagonal (eq. 3-4, or 6-7 under a frame), in whole voxels:
+// the output voxels it reads (the diagonal and the three sub-neighbours one step further along each
+// of its axes), the exemplar offset that turns what each holds into a prediction for the diagonal,
+// and the offset from a diagonal neighbour's similar voxels to candidates for the centre.
+struct Reads {
+  std::array<std::array<Voxel, 4>, kDiagonals> output;
+  std::array<std::array<Voxel, 4>, kDiagonals> correction;
+  std::array<Voxel, kDiagonals> toCentre;
+};
+
+Voxel rounded(const Eigen::Vector3f& v) {
+  return {int(std::lround(v.x())), int(std::lround(v.y())), int(std::lround(v.z()))};
+}
+
+Eigen::Vector3f asVector(const Voxel& v) { return {float(v.x), float(v.y), float(v.z)}; }
+
+Reads readsFor(const Frame& frame, float h) {
+  Reads r;
+  const Frame inverse = frame.transpose();
+  for (std::size_t d = 0; d < kDiagonals; ++d) {
+    const Eigen::Vector3f delta = diagonal(int(d));
+    for (std::size_t t = 0; t < 4; ++t) {
+      Eigen::Vector3f further = delta;
+      if (t > 0) further[Eigen::Index(t - 1)] *= 2;
+      r.output[d][t] = rounded(frame * further);
+      // the exemplar coordinate at p + frame * delta, predicted from the one held at p + output
+      r.correction[d][t] = rounded(h * (delta - inverse * asVector(r.output[d][t])));
+    }
+    r.toCentre[d] = rounded(-h * (inverse * asVector(r.output[d][0])));
+  }
+  return r;
+}
+
+// Wraps c into [0, size) when it is at most one period outside, as every offset here is.
+int wrapNear(int c, int size) { return c < 0 ? c + size : c >= size ? c - size : c; }
+
+struct Corrector {
+  const ExemplarDomain& domain;
+  const AppearanceLevel& appearance;
+  const VolumeSynthesisOptions& o;
+  const LevelPlan& level;
+  Reads isometric = readsFor(Frame::Identity(), float(level.spacing));
+
+  std::size_t featureIndex(const Coord& c, const Voxel& offset) const {
+    return domain.index(wrapNear(c[0] + offset.x, domain.size[0]), wrapNear(c[1] + offset.y, domain.size[1]),
+                        wrapNear(c[2] + offset.z, domain.size[2]));
+  }
+
+  // Sum of squared feature differences over the 8 diagonals of candidate u (exemplar-space, spacing
+  // h), given up once it passes `bound`.
+  float distance(const float* target, const Coord& u, float bound) const {
+    const int D = appearance.dims, h = level.spacing;
+    const std::array<int, 2> xs{wrapNear(u[0] - h, domain.size[0]), wrapNear(u[0] + h, domain.size[0])};
+    const std::array<int, 2> ys{wrapNear(u[1] - h, domain.size[1]), wrapNear(u[1] + h, domain.size[1])};
+    const std::array<int, 2> zs{wrapNear(u[2] - h, domain.size[2]), wrapNear(u[2] + h, domain.size[2])};
+    float sum = 0;
+    for (int d = 0; d < kDiagonals && sum < bound; ++d) {
+      const float* f = appearance.feature(domain.index(xs[d & 1], ys[(d >> 1) & 1], zs[(d >> 2) & 1]));
+      const float* t = target + d * D;
+      for (int i = 0; i < D; ++i) sum += (t[i] - f[i]) * (t[i] - f[i]);
+    }
+    return sum;
+  }
+
+  Coord corrected(const CoordinateGrid& grid, int x, int y, int z, std::vector<float>& target) const {
+    const int D = appearance.dims;
+    const Reads reads = o.field ? readsFor(frameAt(o, level, x, y, z), float(level.spacing)) : isometric;
+    std::fill(target.begin(), target.end(), 0.f);
+    for (std::size_t d = 0; d < kDiagonals; ++d)
+      for (std::size_t t = 0; t < 4; ++t) {
+        const Voxel& at = reads.output[d][t];
+        const float* f = appearance.feature(
+            featureIndex(grid.clampedAt(x + at.x, y + at.y, z + at.z), reads.correction[d][t]));
+        for (int i = 0; i < D; ++i) target[d * std::size_t(D) + std::size_t(i)] += 0.25f * f[i];
+      }
+    Coord best = grid.clampedAt(x, y, z);
+    float bestDistance = distance(target.data(), best, std::numeric_limits<float>::infinity());
+    const int k = o.k;
+    for (std::size_t d = 0; d < kDiagonals; ++d) {
+      const Voxel& at = reads.output[d][0];
+      const std::int32_t* set =
+          &appearance.similar[featureIndex(grid.clampedAt(x + at.x, y + at.y, z + at.z), {0, 0, 0}) *
+                              std::size_t(k)];
+      for (int m = 0; m < k; ++m) {
+        const std::size_t member = featureIndex(coordOf(std::size_t(set[m])), reads.toCentre[d]);
+        const Coord candidate = coordOf(member);
+        const float dist = distance(target.data(), candidate, bestDistance);
+        if (dist < bestDistance) {
+          bestDistance = dist;
+          best = candidate;
+        }
+      }
+    }
+    return best;
+  }
+
+  Coord coordOf(std::size_t i) const {
+    const auto sx = std::size_t(domain.size[0]), sy = std::size_t(domain.size[1]);
+    return {int(i % sx), int(i / sx % sy), int(i / (sx * sy))};
+  }
+};
+
+// One pass: 8 subpasses, one per parity class; a subpass reads the grid as the earlier ones left it
+// and writes its voxels only when all of them are done, so the order within it does not matter.
+void correctionPass(CoordinateGrid& grid, const Corrector& corrector) {
+  const int D = corrector.appearance.dims;
+  for (int parity = 0; parity < 8; ++parity) {
+    const int px = parity & 1, py = (parity >> 1) & 1, pz = (parity >> 2) & 1;
+    auto first = [](int lo, int p) { return lo + ((lo & 1) != p ? 1 : 0); };
+    const int x0 = first(grid.lo.x, px), y0 = first(grid.lo.y, py), z0 = first(grid.lo.z, pz);
+    const int nx = x0 < grid.lo.x + grid.dims.x ? (grid.lo.x + grid.dims.x - x0 + 1) / 2 : 0;
+    const int ny = y0 < grid.lo.y + grid.dims.y ? (grid.lo.y + grid.dims.y - y0 + 1) / 2 : 0;
+    const int nz = z0 < grid.lo.z + grid.dims.z ? (grid.lo.z + grid.dims.z - z0 + 1) / 2 : 0;
+    std::vector<Coord> updates(std::size_t(nx) * std::size_t(ny) * std::size_t(nz));
+    tbb::parallel_for(0, nz, [&](int kz) {
+      std::vector<float> target(std::size_t(kDiagonals * D));
+      for (int ky = 0; ky < ny; ++ky)
+        for (int kx = 0; kx < nx; ++kx)
+          updates[(std::size_t(kz) * std::size_t(ny) + std::size_t(ky)) * std::size_t(nx) + std::size_t(kx)] =
+              corrector.corrected(grid, x0 + 2 * kx, y0 + 2 * ky, z0 + 2 * kz, target);
+    });
+    for (int kz = 0; kz < nz; ++kz)
+      for (int ky = 0; ky < ny; ++ky)
+        for (int kx = 0; kx < nx; ++kx)
+          grid.set(grid.index(x0 + 2 * kx, y0 + 2 * ky, z0 + 2 * kz),
+                   updates[(std::size_t(kz) * std::size_t(ny) + std::size_t(ky)) * std::size_t(nx) +
+                           std::size_t(kx)]);
+  }
+}
+
+void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
+  if (exemplar.channels != 1 && exemplar.channels != 3)
+    throw InputError("the exemplar volume must have 1 (density) or 3 (colour) channels");
+  for (const int side : {o.dims.x, o.dims.y, o.dims.z})
+    if (side < 2 || side > 1024)
+      throw InputError("each output side must be in [2, 1024], got " + std::to_string(side));
+  auto inRange = [](const std::string& name, double v, double lo, double hi) {
+    if (!(v >= lo && v <= hi))
+      throw InputError(name + " must be in [" + std::to_string(int(lo)) + ", " + std::to_string(int(hi)) +
+                       "], got " + std::to_string(v));
+  };
+  inRange("--jitter", o.jitter, 0, 2);
+  inRange("--k", o.k, 1, 16);
+  inRange("--exclusion", o.exclusion, 1, 31);
+  inRange("--pca-dims", o.pcaDims, 1, 64);
+  inRange("--corrections", o.corrections, 0, 8);
+  inRange("--levels", o.levels, 0, 11);
+  if (o.window < 3 || o.window > 9 || o.window % 2 == 0)
+    throw InputError("--appearance must be odd and in [3, 9], got " + std::to_string(o.window));
+  if (o.field && !(o.field->dims == o.dims))
+    throw std::logic_error("synthesizeFromVolume: field dims differ from the output's");
+  if (o.region) {
+    const VoxelBox& r = *o.region;
+    if (!(r.lo.x >= 0 && r.lo.y >= 0 && r.lo.z >= 0 && r.hi.x <= o.dims.x && r.hi.y <= o.dims.y &&
+          r.hi.z <= o.dims.z && r.lo.x < r.hi.x && r.lo.y < r.hi.y && r.lo.z < r.hi.z))
+      throw InputError(
+          "--region must be a non-empty box X0 Y0 Z0 X1 Y1 Z1 inside the output (0 <= X0 < X1 <= " +
+          std::to_string(o.dims.x) + ", likewise for Y and Z)");
+  }
+}
+
+// Levels whose window (window x spacing) fits in half the domain's smallest side.
+int correctableLevels(const ExemplarDomain& domain, int window) {
+  const int smallest = std::min({domain.size[0], domain.size[1], domain.size[2]});
+  int levels = 0;
+  while (2 * window * (1 << levels) <= smallest) ++levels;
+  return std::max(levels, 1);
+}
+
+void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const DenseVolume& exemplar,
+             VolumeSynthesisResult& result) {
+  const VoxelBox& box = result.box;
+  const Dims dims = box.dims();
+  result.values = {dims, exemplar.channels,
+                   std::vector<float>(dims.count() * std::size_t(exemplar.channels))};
+  result.source.resize(dims.count());
+  tbb::parallel_for(0, dims.z, [&](int k) {
+    for (int j = 0; j < dims.y; ++j)
+      for (int i = 0; i < dims.x; ++i) {
+        const Coord c = grid.clampedAt(box.lo.x + i, box.lo.y + j, box.lo.z + k);
+        const Coord e{c[0] + domain.border, c[1] + domain.border, c[2] + domain.border};
+        std::copy_n(exemplar.at(e[0], e[1], e[2]), exemplar.channels, result.values.at(i, j, k));
+        result.source[dims.index(i, j, k)] = {float(e[0]), float(e[1]), float(e[2])};
+      }
+  });
+}
+
+}  // namespace
+
+VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  checkOptions(exemplar, o);
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (o.threads > 0)
+    threadLimit =
+        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+  const ExemplarDomain domain = synthesis::exemplarDomain(exemplar.dims, o.window);
+  const int allowed = correctableLevels(domain, o.window);
+  if (o.levels > allowed)
+    throw InputError("--levels " + std::to_string(o.levels) + " is more than this exemplar allows (" +
+                     std::to_string(allowed) + ": each level's " + std::to_string(o.window) +
+                     "^3 window times its spacing must fit in half the exemplar)");
+  const int corrected = o.levels > 0 ? o.levels : allowed;
+
+  VolumeSynthesisResult result;
+  result.box = o.region.value_or(VoxelBox{{0, 0, 0}, {o.dims.x, o.dims.y, o.dims.z}});
+  result.statistics.domain = domain.size;
+  const std::vector<LevelPlan> plan = planLevels(o, result.box, corrected);
+
+  synthesis::AppearanceOptions appearanceOptions{o.window, o.pcaDims, o.k, o.exclusion};
+  std::vector<AppearanceLevel> appearance(static_cast<std::size_t>(corrected));
+  std::unique_ptr<CoordinateGrid> grid;
+  for (std::size_t l = 0; l < plan.size(); ++l) {
+    const LevelPlan& level = plan[l];
+    VolumeLevelStatistics stats;
+    stats.spacing = level.spacing;
+    stats.window = level.window.dims();
+    stats.corrected = level.appearance >= 0;
+    if (level.appearance >= 0) {
+      const auto analysisStart = std::chrono::steady_clock::now();
+      AppearanceLevel& a = appearance[std::size_t(level.appearance)];
+      a = synthesis::buildAppearanceLevel(exemplar, domain, level.spacing, appearanceOptions);
+      stats.appearanceDims = a.dims;
+      stats.keptVariance = a.keptVariance;
+      stats.similarityFallbackShare = a.excludedFallbackShare;
+      stats.analysisSeconds = secondsSince(analysisStart);
+      result.statistics.analysisSeconds += stats.analysisSeconds;
+    }
+    const auto levelStart = std::chrono::steady_clock::now();
+    auto next = std::make_unique<CoordinateGrid>(upsample(grid.get(), domain, o, level, int(l)));
+    if (level.appearance >= 0) {
+      const Corrector corrector{domain, appearance[std::size_t(level.appearance)], o, level};
+      for (int pass = 0; pass < o.corrections; ++pass) correctionPass(*next, corrector);
+    }
+    grid = std::move(next);
+    stats.seconds = secondsSince(levelStart);
+    result.statistics.levels.push_back(stats);
+    if (o.progress)
+      o.progress("level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) + " (spacing " +
+                 std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")");
+  }
+  copyOut(*grid, domain, exemplar, result);
+  result.statistics.seconds = secondsSince(start);
+  return result;
+}
+
+}  // namespace solidtex

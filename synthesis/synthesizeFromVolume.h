@@ -1,0 +1,76 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/DenseVolume.h"
+#include "synthesis/FrameField.h"
+
+namespace solidtex {
+
+/// A box of output voxels [lo, hi) per axis.
+struct VoxelBox {
+  Voxel lo, hi;
+  Dims dims() const { return {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}; }
+};
+
+/// Options of synthesizeFromVolume; defaults follow Su 2008 (chapter 5) and `solidtex synthesize`.
+struct VolumeSynthesisOptions {
+  Dims dims{64, 64, 64};           ///< output voxels per axis
+  std::optional<VoxelBox> region;  ///< only this box of the output, identical to it in the full volume
+  /// Levels corrected against the exemplar, finest first; 0 = every level whose appearance window
+  /// (window x spacing) fits in half the exemplar. Coarser levels are upsampled and jittered only.
+  int levels = 0;
+  double jitter = 0.7;  ///< r: each level's coordinates move by up to r x spacing per axis
+  int k = 3;            ///< similarity set size
+  int exclusion = 7;    ///< similarity set members keep out of each other's exclusion^3 cube
+  int window = 5;       ///< appearance vectors: window^3 neighbourhoods (thesis: 5)
+  int pcaDims = 16;     ///< appearance space dimensions
+  int corrections = 4;  ///< correction passes per level, each in 8 subpasses (2x2x2 parity classes)
+  const FrameField* field = nullptr;  ///< anisometric control over `dims`; null = isometric
+  std::uint64_t seed = 1;
+  int threads = 0;  ///< worker threads; 0 = all cores. Output does not depend on it.
+  std::function<void(const std::string&)> progress;  ///< one line per level, when set
+};
+
+/// One pyramid level, coarsest first.
+struct VolumeLevelStatistics {
+  int spacing = 1;  ///< exemplar voxels per output voxel step (h_l)
+  Dims window;      ///< voxels synthesised at this level (the region's needs, or all)
+  bool corrected = false;
+  int appearanceDims = 0;
+  double keptVariance = 0;
+  /// Share of exemplar voxels whose similarity set could not keep its members out of each other's
+  /// exclusion cubes (too few similar voxels elsewhere among the nearest searched)
+  double similarityFallbackShare = 0;
+  double analysisSeconds = 0;  ///< appearance vectors and similarity sets
+  double seconds = 0;          ///< upsampling, jitter and correction
+};
+
+/// What the synthesis did and how long it took.
+struct VolumeSynthesisStatistics {
+  std::array<int, 3> domain{};  ///< exemplar voxels usable as sources (the border dropped)
+  std::vector<VolumeLevelStatistics> levels;
+  double analysisSeconds = 0;
+  double seconds = 0;
+};
+
+/// The synthesised box and the exemplar coordinate each voxel copies.
+struct VolumeSynthesisResult {
+  VoxelBox box;                              ///< the region, or the whole output
+  DenseVolume values;                        ///< the exemplar's channels, box.dims()
+  std::vector<std::array<float, 3>> source;  ///< exemplar voxel copied, per voxel
+  VolumeSynthesisStatistics statistics;
+};
+
+/// Su 2008 solid synthesis from a volume exemplar: appearance-space pyramid synthesis on exemplar
+/// coordinates (Lefebvre and Hoppe 2005/2006 in 3D), steered by an optional frame field.
+/// Same exemplar, options and seed give the same volume for any thread count, and a region equals
+/// the same box of the full volume. Throws InputError with one line for bad input.
+VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar,
+                                           const VolumeSynthesisOptions& options);
+
+}  // namespace solidtex
