@@ -29,14 +29,24 @@ struct CoordinateGrid {
   Dims dims;
   std::vector<std::array<std::int16_t, 3>> coords;
 
-  bool holds(int x, int y, int z) const { return dims.contains(x - lo.x, y - lo.y, z - lo.z); }
   std::size_t index(int x, int y, int z) const { return dims.index(x - lo.x, y - lo.y, z - lo.z); }
-  // Reads outside the window clamp to it, as reads outside the volume clamp to the volume.
-  Coord clampedAt(int x, int y, int z) const {
-    const auto& c =
-        coords[dims.index(std::clamp(x - lo.x, 0, dims.x - 1), std::clamp(y - lo.y, 0, dims.y - 1),
-                          std::clamp(z - lo.z, 0, dims.z - 1))];
+  Coord at(int x, int y, int z) const {
+    const auto& c = coords[index(x, y, z)];
     return {c[0], c[1], c[2]};
+  }
+  // A read outside the window continues the nearest voxel inside it coherently: that voxel's
+  // coordinate moved by the exemplar step the frame maps there (`inverse` = frame transposed,
+  // times the spacing). Repeating the edge voxel instead would distort the neighbourhoods along the
+  // output's faces. The rule is the same at a volume's faces for a region and for the whole volume.
+  Coord extendedAt(int x, int y, int z, const Frame& inverse, float h) const {
+    const Voxel c{std::clamp(x, lo.x, lo.x + dims.x - 1), std::clamp(y, lo.y, lo.y + dims.y - 1),
+                  std::clamp(z, lo.z, lo.z + dims.z - 1)};
+    Coord s = at(c.x, c.y, c.z);
+    if (c.x == x && c.y == y && c.z == z) return s;
+    const Eigen::Vector3f step =
+        h * (inverse * Eigen::Vector3f(float(x - c.x), float(y - c.y), float(z - c.z)));
+    for (int a = 0; a < 3; ++a) s[std::size_t(a)] += int(std::lround(step[a]));
+    return s;
   }
   void set(std::size_t i, const Coord& c) {
     coords[i] = {std::int16_t(c[0]), std::int16_t(c[1]), std::int16_t(c[2])};
@@ -122,7 +132,7 @@ CoordinateGrid upsample(const CoordinateGrid* parent, const ExemplarDomain& doma
         Coord c{0, 0, 0};
         Eigen::Vector3f offset = Eigen::Vector3f::Zero();
         if (parent) {
-          c = parent->clampedAt(x / 2, y / 2, z / 2);
+          c = parent->at(x / 2, y / 2, z / 2);
           const Eigen::Vector3f child(float(x % 2) - 0.5f, float(y % 2) - 0.5f, float(z % 2) - 0.5f);
           offset = h * (frameAt(o, level, x, y, z).transpose() * child) + Eigen::Vector3f::Constant(0.5f * h);
         }
@@ -134,6 +144,7 @@ CoordinateGrid upsample(const CoordinateGrid* parent, const ExemplarDomain& doma
 }
 
 constexpr int kDiagonals = 8;
+constexpr int kMaxK = 16;  // similarity set size
 
 Eigen::Vector3f diagonal(int d) { return {d & 1 ? 1.f : -1.f, d & 2 ? 1.f : -1.f, d & 4 ? 1.f : -1.f}; }
 
@@ -203,25 +214,37 @@ struct Corrector {
 
   Coord corrected(const CoordinateGrid& grid, int x, int y, int z, std::vector<float>& target) const {
     const int D = appearance.dims;
-    const Reads reads = o.field ? readsFor(frameAt(o, level, x, y, z), float(level.spacing)) : isometric;
+    const Frame frame = o.field ? frameAt(o, level, x, y, z) : Frame::Identity();
+    const Frame inverse = frame.transpose();
+    const float h = float(level.spacing);
+    const Reads reads = o.field ? readsFor(frame, h) : isometric;
     std::fill(target.begin(), target.end(), 0.f);
     for (std::size_t d = 0; d < kDiagonals; ++d)
       for (std::size_t t = 0; t < 4; ++t) {
         const Voxel& at = reads.output[d][t];
         const float* f = appearance.feature(
-            featureIndex(grid.clampedAt(x + at.x, y + at.y, z + at.z), reads.correction[d][t]));
+            featureIndex(grid.extendedAt(x + at.x, y + at.y, z + at.z, inverse, h), reads.correction[d][t]));
         for (int i = 0; i < D; ++i) target[d * std::size_t(D) + std::size_t(i)] += 0.25f * f[i];
       }
-    Coord best = grid.clampedAt(x, y, z);
+    Coord best = grid.at(x, y, z);
     float bestDistance = distance(target.data(), best, std::numeric_limits<float>::infinity());
     const int k = o.k;
+    // Where the output is coherent most neighbours propose the same voxel: each is measured once.
+    std::array<std::size_t, kDiagonals * kMaxK + 1> tried;
+    std::size_t triedCount = 0;
+    tried[triedCount++] = domain.index(best[0], best[1], best[2]);
     for (std::size_t d = 0; d < kDiagonals; ++d) {
       const Voxel& at = reads.output[d][0];
       const std::int32_t* set =
-          &appearance.similar[featureIndex(grid.clampedAt(x + at.x, y + at.y, z + at.z), {0, 0, 0}) *
-                              std::size_t(k)];
+          &appearance
+               .similar[featureIndex(grid.extendedAt(x + at.x, y + at.y, z + at.z, inverse, h), {0, 0, 0}) *
+                        std::size_t(k)];
       for (int m = 0; m < k; ++m) {
         const std::size_t member = featureIndex(coordOf(std::size_t(set[m])), reads.toCentre[d]);
+        if (std::find(tried.begin(), tried.begin() + std::ptrdiff_t(triedCount), member) !=
+            tried.begin() + std::ptrdiff_t(triedCount))
+          continue;
+        tried[triedCount++] = member;
         const Coord candidate = coordOf(member);
         const float dist = distance(target.data(), candidate, bestDistance);
         if (dist < bestDistance) {
@@ -279,7 +302,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
                        "], got " + std::to_string(v));
   };
   inRange("--jitter", o.jitter, 0, 2);
-  inRange("--k", o.k, 1, 16);
+  inRange("--k", o.k, 1, kMaxK);
   inRange("--exclusion", o.exclusion, 1, 31);
   inRange("--pca-dims", o.pcaDims, 1, 64);
   inRange("--corrections", o.corrections, 0, 8);
@@ -316,7 +339,7 @@ void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const Den
   tbb::parallel_for(0, dims.z, [&](int k) {
     for (int j = 0; j < dims.y; ++j)
       for (int i = 0; i < dims.x; ++i) {
-        const Coord c = grid.clampedAt(box.lo.x + i, box.lo.y + j, box.lo.z + k);
+        const Coord c = grid.at(box.lo.x + i, box.lo.y + j, box.lo.z + k);
         const Coord e{c[0] + domain.border, c[1] + domain.border, c[2] + domain.border};
         std::copy_n(exemplar.at(e[0], e[1], e[2]), exemplar.channels, result.values.at(i, j, k));
         result.source[dims.index(i, j, k)] = {float(e[0]), float(e[1]), float(e[2])};

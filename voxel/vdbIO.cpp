@@ -47,7 +47,10 @@ openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::In
                                     const openvdb::math::Transform::Ptr& xform) {
   openvdb::FloatGrid::Ptr grid;
   if (!volume.density.empty()) {
-    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, 0.f, "density", xform);
+    // Without colour the density is the content (a solid from a density volume): every voxel stays
+    // active, zeros included, so the file keeps its box.
+    const float tolerance = volume.color.empty() ? -1.f : 0.f;
+    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, tolerance, "density", xform);
   } else if (ids) {
     grid = openvdb::FloatGrid::create(
         std::make_shared<openvdb::FloatTree>(ids->tree(), 0.f, 1.f, openvdb::TopologyCopy()));

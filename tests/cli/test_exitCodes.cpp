@@ -154,3 +154,36 @@ TEST(ExitCodes, SkeletalSynthesisIsTheSameAtAnyThreadCount) {
     EXPECT_EQ(bytes[0], bytes[1]) << command;
   }
 }
+
+TEST(ExitCodes, VolumeExemplarsRefuseWhatTheyCannotUse) {
+  const fs::path dir = emptyFolder("volume");
+  const std::string ct = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "volumes" / "ct_stent_64.vdb");
+  const std::string out = " -o " + shellWord(dir / "a.vdb") + " --report " + shellWord(dir / "r.json");
+  expectRefused(
+      {"synthesize " + ct + out + " --method kopf", "synthesize " + ct + out + " --iterations 3",
+       "synthesize " + kPhoto + out + " --field circle", "synthesize " + kPhoto + out + " --jitter 0.5",
+       "synthesize " + ct + out + " --field spiral", "synthesize " + ct + out + " --levels 9",
+       "synthesize " + ct + out + " --size 16 --region 0 0 0 17 4 4",
+       "synthesize " + shellWord(dir / "missing.vdb") + out},
+      1, dir);
+}
+
+TEST(ExitCodes, VolumeSynthesisIsTheSameAtAnyThreadCountAndKeepsTheDensityGrid) {
+  const fs::path dir = emptyFolder("volume_success");
+  const std::string ct = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "volumes" / "ct_stent_64.vdb");
+  std::string bytes[2];
+  for (int threads : {1, 2}) {
+    const fs::path output = dir / (std::to_string(threads) + ".vdb");
+    const Outcome outcome =
+        runSolidtex("synthesize " + ct + " --dims 24 20 16 --levels 1 --field slant -o " + shellWord(output) +
+                    " --quiet --no-quality --threads " + std::to_string(threads));
+    ASSERT_EQ(outcome.exitCode, 0);
+    bytes[threads - 1] = readFile(output);
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_EQ(bytes[0], bytes[1]);
+  const auto solid = solidtex::readVdb((dir / "1.vdb").string());
+  EXPECT_EQ(solid.dims, (solidtex::Dims{24, 20, 16}));
+  EXPECT_TRUE(solid.color.empty());
+  EXPECT_EQ(solid.density.size(), solid.dims.count());
+}
