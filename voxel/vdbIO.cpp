@@ -180,12 +180,12 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
 namespace {
 
 template <typename GridT, typename Value>
-void denseFrom(const openvdb::GridBase::Ptr& base, const Dims& dims, std::vector<Value>& out) {
+void denseFrom(const openvdb::GridBase::Ptr& base, const openvdb::CoordBBox& box, std::vector<Value>& out) {
   auto grid = openvdb::gridPtrCast<GridT>(base);
   if (!grid) return;
-  out.assign(dims.count(), Value{});
+  out.assign(box.volume(), Value{});
   openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(
-      boxOf(dims), reinterpret_cast<typename GridT::ValueType*>(out.data()));
+      box, reinterpret_cast<typename GridT::ValueType*>(out.data()));
   openvdb::tools::copyToDense(*grid, dense);
 }
 
@@ -211,17 +211,15 @@ SolidVolume readVdb(const std::string& path) {
     if (grid->getName() == "density" || grid->getName() == "color")
       box.expand(grid->evalActiveVoxelBoundingBox());
   if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid");
-  if (box.min() != openvdb::Coord(0))
-    throw InputError("cannot read " + path + ": the volume does not start at voxel (0,0,0)");
-  volume.dims = {box.max().x() + 1, box.max().y() + 1, box.max().z() + 1};
+  volume.dims = {box.dim().x(), box.dim().y(), box.dim().z()};
   for (const auto& grid : *grids) {
     const auto& name = grid->getName();
     if (name == "density")
-      denseFrom<openvdb::FloatGrid>(grid, volume.dims, volume.density);
+      denseFrom<openvdb::FloatGrid>(grid, box, volume.density);
     else if (name == "color")
-      denseFrom<openvdb::Vec3SGrid>(grid, volume.dims, volume.color);
+      denseFrom<openvdb::Vec3SGrid>(grid, box, volume.color);
     else if (name == "particle_id")
-      denseFrom<openvdb::Int32Grid>(grid, volume.dims, volume.particleId);
+      denseFrom<openvdb::Int32Grid>(grid, box, volume.particleId);
   }
   for (auto it = meta->beginMeta(); it != meta->endMeta(); ++it)
     volume.metadata[it->first] = it->second->str();

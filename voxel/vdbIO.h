@@ -11,8 +11,9 @@ namespace solidtex {
 /// arrays are freed grid by grid as the .vdb's trees are built.
 void writeVdb(const std::string& path, SolidVolume volume, double voxelSize = 1.0);
 
-/// Reads a .vdb written by writeVdb (or any file with a `density` FloatGrid; `color` optional) into
-/// dense form over the active bounding box of its grids, starting at index 0.
+/// Reads a .vdb written by writeVdb (or any file with a `density` FloatGrid and/or a `color`
+/// Vec3SGrid) into dense form over the active bounding box of those grids, its first voxel at
+/// index 0 (a CT crop that starts elsewhere is shifted there).
 SolidVolume readVdb(const std::string& path);
 
 }  // namespace solidtex

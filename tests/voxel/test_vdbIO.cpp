@@ -78,6 +78,36 @@ TEST(VdbIO, ContinuousSolidHasDensityOneEverywhere) {
   fs::remove(path);
 }
 
+TEST(VdbIO, ADensityOnlySolidKeepsItsBoxAndValues) {
+  const auto path = tempPath("density.vdb");
+  SolidVolume v;
+  v.dims = {3, 2, 2};
+  v.density = {0.f, 0.5f, 0.f, 0.25f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 0.f, 0.f};  // zeros on every face
+  v.sourceVoxel.assign(v.dims.count(), {1.f, 2.f, 3.f});
+  writeVdb(path.string(), v);
+  const SolidVolume r = readVdb(path.string());
+  EXPECT_EQ(r.dims, v.dims);
+  EXPECT_TRUE(r.color.empty());
+  EXPECT_EQ(r.density, v.density);
+  fs::remove(path);
+}
+
+TEST(VdbIO, AVolumeThatStartsElsewhereIsReadFromItsFirstVoxel) {
+  const auto path = tempPath("offset.vdb");
+  openvdb::initialize();
+  auto grid = openvdb::FloatGrid::create(0.f);
+  grid->setName("density");
+  grid->tree().setValue(openvdb::Coord(10, -4, 7), 0.5f);
+  grid->tree().setValue(openvdb::Coord(11, -3, 7), 0.75f);
+  openvdb::io::File(path.string()).write({grid});
+  const SolidVolume r = readVdb(path.string());
+  EXPECT_EQ(r.dims, (Dims{2, 2, 1}));
+  ASSERT_EQ(r.density.size(), 4u);
+  EXPECT_EQ(r.density[r.dims.index(0, 0, 0)], 0.5f);
+  EXPECT_EQ(r.density[r.dims.index(1, 1, 0)], 0.75f);
+  fs::remove(path);
+}
+
 TEST(VdbIO, UnwritablePathThrowsAndLeavesNothing) {
   const fs::path dir = tempPath("missing_folder");
   fs::remove_all(dir);
