@@ -23,9 +23,11 @@ int main(int argc, char** argv) {
   for (int k = 0; k < side; ++k)
     for (int j = 0; j < side; ++j)
       for (int i = 0; i < side; ++i) {
-        const double phase = 1.5 * std::sin(2 * std::numbers::pi * i / side) * std::cos(2 * std::numbers::pi * k / side);
+        const double phase =
+            1.5 * std::sin(2 * std::numbers::pi * i / side) * std::cos(2 * std::numbers::pi * k / side);
         volume.density[volume.dims.index(i, j, k)] =
-            float(0.5 + 0.4 * std::sin(2 * std::numbers::pi * j / 8 + phase) + 0.08 * (solidtex::uniform01(rng) - 0.5));
+            float(0.5 + 0.4 * std::sin(2 * std::numbers::pi * j / 8 + phase) +
+                  0.08 * (solidtex::uniform01(rng) - 0.5));
       }
   volume.metadata["exemplar"] = "layered_volume";
   solidtex::writeVdb(argv[1], std::move(volume));

@@ -67,7 +67,7 @@ nlohmann::json levelReports(const VolumeSynthesisStatistics& stats) {
     const VolumeLevelStatistics& s = stats.levels[l];
     nlohmann::json entry = {{"level", l + 1},
                             {"spacing", s.spacing},
-                            {"voxels", {s.window.x, s.window.y, s.window.z}},
+                            {"voxels", {s.synthesised.x, s.synthesised.y, s.synthesised.z}},
                             {"corrected", s.corrected},
                             {"seconds", s.seconds}};
     if (s.corrected) {
@@ -98,6 +98,33 @@ nlohmann::json volumeQualityJson(const VolumeQuality& q) {
           {"seconds", q.seconds}};
 }
 
+// At most the central kMeasuredSide^3 box: the measure indexes every output patch, which a large
+// output cannot afford (25 floats a voxel).
+constexpr int kMeasuredSide = 128;
+
+DenseVolume centralBox(const DenseVolume& v, int side) {
+  const Dims d{std::min(v.dims.x, side), std::min(v.dims.y, side), std::min(v.dims.z, side)};
+  if (d == v.dims) return v;
+  const Voxel lo{(v.dims.x - d.x) / 2, (v.dims.y - d.y) / 2, (v.dims.z - d.z) / 2};
+  DenseVolume out{d, v.channels, std::vector<float>(d.count() * std::size_t(v.channels))};
+  for (int k = 0; k < d.z; ++k)
+    for (int j = 0; j < d.y; ++j)
+      std::copy_n(v.at(lo.x, lo.y + j, lo.z + k), std::size_t(d.x) * std::size_t(v.channels),
+                  out.at(0, j, k));
+  return out;
+}
+
+nlohmann::json measuredQuality(const DenseVolume& output, const DenseVolume& exemplar,
+                               const VolumeQualityOptions& options) {
+  const Dims& d = output.dims;
+  if (std::min({d.x, d.y, d.z}) < options.patch)
+    return {{"skipped", "the output is thinner than a " + std::to_string(options.patch) + "^3 patch"}};
+  const DenseVolume measured = centralBox(output, kMeasuredSide);
+  nlohmann::json quality = volumeQualityJson(measureVolumeQuality(measured, exemplar, options));
+  quality["measured_voxels"] = {measured.dims.x, measured.dims.y, measured.dims.z};
+  return quality;
+}
+
 }  // namespace
 
 DenseVolume readVolumeExemplar(const std::string& path) {
@@ -111,6 +138,9 @@ DenseVolume readVolumeExemplar(const std::string& path) {
   } else {
     out.values = std::move(v.density);
   }
+  if (out.values.size() != out.dims.count() * std::size_t(out.channels))
+    throw InputError("cannot read " + path +
+                     ": its color grid is not Vec3s and its density grid is not float");
   return out;
 }
 
@@ -152,10 +182,11 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   report["seconds"] = result.statistics.seconds;
   if (job.measure) {
     progress.update("measuring the volume against the exemplar");
-    report["quality"] = volumeQualityJson(measureVolumeQuality(result.values, exemplar, job.quality));
+    report["quality"] = measuredQuality(result.values, exemplar, job.quality);
     progress.done();
   }
   SolidVolume solid = solidOf(std::move(result));
+  solid.origin = box.lo;
   solid.metadata = {{"solidtex_version", SOLIDTEX_VERSION},
                     {"command_line", job.commandLine},
                     {"seed", std::to_string(options.seed)},

@@ -66,6 +66,14 @@ openvdb::CoordBBox boxOf(const Dims& dims) {
   return openvdb::CoordBBox(openvdb::Coord(0, 0, 0), openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
 }
 
+std::string boxName(const openvdb::CoordBBox& box) {
+  if (box.empty()) return "none";
+  const openvdb::Coord lo = box.min(), hi = box.max();
+  return "(" + std::to_string(lo.x()) + "," + std::to_string(lo.y()) + "," + std::to_string(lo.z()) +
+         ") to (" + std::to_string(hi.x()) + "," + std::to_string(hi.y()) + "," + std::to_string(hi.z()) +
+         ")";
+}
+
 using DenseVec3 = openvdb::tools::Dense<openvdb::Vec3s, openvdb::tools::LayoutXYZ>;
 
 std::string voxelName(const Voxel& v) {
@@ -146,6 +154,12 @@ FrameField readFrameField(const std::string& path, const Dims& dims) {
   } catch (const openvdb::Exception& e) {
     throw InputError("cannot read " + path + ": " + e.what());
   }
+
+  openvdb::CoordBBox covered;
+  for (const auto& grid : grids) covered.expand(grid->evalActiveVoxelBoundingBox());
+  if (covered != boxOf(dims))
+    throw InputError("cannot read " + path + ": the field covers voxels " + boxName(covered) +
+                     ", the output needs " + boxName(boxOf(dims)));
 
   FrameField field;
   field.dims = dims;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <tbb/global_control.h>
@@ -144,7 +145,7 @@ CoordinateGrid upsample(const CoordinateGrid* parent, const ExemplarDomain& doma
 }
 
 constexpr int kDiagonals = 8;
-constexpr int kMaxK = 16;  // similarity set size
+constexpr int kMaxK = 16;  // the largest similarity set size
 
 Eigen::Vector3f diagonal(int d) { return {d & 1 ? 1.f : -1.f, d & 2 ? 1.f : -1.f, d & 4 ? 1.f : -1.f}; }
 
@@ -214,7 +215,7 @@ struct Corrector {
 
   Coord corrected(const CoordinateGrid& grid, int x, int y, int z, std::vector<float>& target) const {
     const int D = appearance.dims;
-    const Frame frame = o.field ? frameAt(o, level, x, y, z) : Frame::Identity();
+    const Frame frame = frameAt(o, level, x, y, z);
     const Frame inverse = frame.transpose();
     const float h = float(level.spacing);
     const Reads reads = o.field ? readsFor(frame, h) : isometric;
@@ -262,44 +263,57 @@ struct Corrector {
   }
 };
 
-// One pass: 8 subpasses, one per parity class; a subpass reads the grid as the earlier ones left it
-// and writes its voxels only when all of them are done, so the order within it does not matter.
+// One pass: 8 subpasses, one per parity class of (x, y, z) mod 2; a subpass reads the grid as the
+// earlier ones left it and writes its voxels only when all of them are done, so neither the order
+// within it nor the thread count matters (under a frame a voxel may read others of its class).
 void correctionPass(CoordinateGrid& grid, const Corrector& corrector) {
   const int D = corrector.appearance.dims;
+  auto first = [](int lo, int parity) { return lo + ((lo & 1) != parity ? 1 : 0); };
+  auto count = [](int first, int end) { return first < end ? (end - first + 1) / 2 : 0; };
   for (int parity = 0; parity < 8; ++parity) {
-    const int px = parity & 1, py = (parity >> 1) & 1, pz = (parity >> 2) & 1;
-    auto first = [](int lo, int p) { return lo + ((lo & 1) != p ? 1 : 0); };
-    const int x0 = first(grid.lo.x, px), y0 = first(grid.lo.y, py), z0 = first(grid.lo.z, pz);
-    const int nx = x0 < grid.lo.x + grid.dims.x ? (grid.lo.x + grid.dims.x - x0 + 1) / 2 : 0;
-    const int ny = y0 < grid.lo.y + grid.dims.y ? (grid.lo.y + grid.dims.y - y0 + 1) / 2 : 0;
-    const int nz = z0 < grid.lo.z + grid.dims.z ? (grid.lo.z + grid.dims.z - z0 + 1) / 2 : 0;
-    std::vector<Coord> updates(std::size_t(nx) * std::size_t(ny) * std::size_t(nz));
-    tbb::parallel_for(0, nz, [&](int kz) {
+    const Voxel start{first(grid.lo.x, parity & 1), first(grid.lo.y, (parity >> 1) & 1),
+                      first(grid.lo.z, (parity >> 2) & 1)};
+    const Dims members{count(start.x, grid.lo.x + grid.dims.x), count(start.y, grid.lo.y + grid.dims.y),
+                       count(start.z, grid.lo.z + grid.dims.z)};
+    auto voxelOf = [&](int i, int j, int k) {
+      return Voxel{start.x + 2 * i, start.y + 2 * j, start.z + 2 * k};
+    };
+    std::vector<Coord> updates(members.count());
+    tbb::parallel_for(0, members.z, [&](int k) {
       std::vector<float> target(std::size_t(kDiagonals * D));
-      for (int ky = 0; ky < ny; ++ky)
-        for (int kx = 0; kx < nx; ++kx)
-          updates[(std::size_t(kz) * std::size_t(ny) + std::size_t(ky)) * std::size_t(nx) + std::size_t(kx)] =
-              corrector.corrected(grid, x0 + 2 * kx, y0 + 2 * ky, z0 + 2 * kz, target);
+      for (int j = 0; j < members.y; ++j)
+        for (int i = 0; i < members.x; ++i) {
+          const Voxel v = voxelOf(i, j, k);
+          updates[members.index(i, j, k)] = corrector.corrected(grid, v.x, v.y, v.z, target);
+        }
     });
-    for (int kz = 0; kz < nz; ++kz)
-      for (int ky = 0; ky < ny; ++ky)
-        for (int kx = 0; kx < nx; ++kx)
-          grid.set(grid.index(x0 + 2 * kx, y0 + 2 * ky, z0 + 2 * kz),
-                   updates[(std::size_t(kz) * std::size_t(ny) + std::size_t(ky)) * std::size_t(nx) +
-                           std::size_t(kx)]);
+    for (int k = 0; k < members.z; ++k)
+      for (int j = 0; j < members.y; ++j)
+        for (int i = 0; i < members.x; ++i) {
+          const Voxel v = voxelOf(i, j, k);
+          grid.set(grid.index(v.x, v.y, v.z), updates[members.index(i, j, k)]);
+        }
   }
 }
 
 void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
   if (exemplar.channels != 1 && exemplar.channels != 3)
     throw InputError("the exemplar volume must have 1 (density) or 3 (colour) channels");
+  if (exemplar.values.size() != exemplar.dims.count() * std::size_t(exemplar.channels))
+    throw std::logic_error("synthesizeFromVolume: the exemplar's values do not match its dimensions");
+  if (!std::all_of(exemplar.values.begin(), exemplar.values.end(), [](float v) { return std::isfinite(v); }))
+    throw InputError("the exemplar volume holds values that are not finite (NaN or infinity)");
   for (const int side : {o.dims.x, o.dims.y, o.dims.z})
     if (side < 2 || side > 1024)
       throw InputError("each output side must be in [2, 1024], got " + std::to_string(side));
-  auto inRange = [](const std::string& name, double v, double lo, double hi) {
+  auto number = [](double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  };
+  auto inRange = [&](const std::string& name, double v, double lo, double hi) {
     if (!(v >= lo && v <= hi))
-      throw InputError(name + " must be in [" + std::to_string(int(lo)) + ", " + std::to_string(int(hi)) +
-                       "], got " + std::to_string(v));
+      throw InputError(name + " must be in [" + number(lo) + ", " + number(hi) + "], got " + number(v));
   };
   inRange("--jitter", o.jitter, 0, 2);
   inRange("--k", o.k, 1, kMaxK);
@@ -376,7 +390,7 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
     const LevelPlan& level = plan[l];
     VolumeLevelStatistics stats;
     stats.spacing = level.spacing;
-    stats.window = level.window.dims();
+    stats.synthesised = level.window.dims();
     stats.corrected = level.appearance >= 0;
     if (level.appearance >= 0) {
       const auto analysisStart = std::chrono::steady_clock::now();

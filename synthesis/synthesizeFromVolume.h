@@ -38,8 +38,8 @@ struct VolumeSynthesisOptions {
 
 /// One pyramid level, coarsest first.
 struct VolumeLevelStatistics {
-  int spacing = 1;  ///< exemplar voxels per output voxel step (h_l)
-  Dims window;      ///< voxels synthesised at this level (the region's needs, or all)
+  int spacing = 1;   ///< exemplar voxels per output voxel step (h_l)
+  Dims synthesised;  ///< voxels synthesised at this level (what the region needs, or all)
   bool corrected = false;
   int appearanceDims = 0;
   double keptVariance = 0;

@@ -23,7 +23,9 @@ struct SolidVolume {
   std::vector<std::array<float, 2>>
       sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
   std::vector<std::array<float, 3>> sourceVoxel;  ///< dims.count() or empty; exemplar voxel each voxel copies
-  std::map<std::string, std::string> metadata;    ///< file metadata: command line, seed, exemplar, ...
+  Voxel origin;  ///< where voxel (0,0,0) lies in a larger volume this is a region of (world = (origin + i) x
+                 ///< voxel size)
+  std::map<std::string, std::string> metadata;  ///< file metadata: command line, seed, exemplar, ...
 };
 
 }  // namespace solidtex

@@ -72,6 +72,8 @@ void release(std::vector<T>& data) {
 // Each dense array is released as soon as its grid is built, so the volume is never held twice.
 openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
+  // A region of a larger volume keeps its index space from 0 and is placed by its transform.
+  xform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) * voxelSize);
   openvdb::Int32Grid::Ptr ids;
   if (!volume.particleId.empty())
     ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);

@@ -190,6 +190,8 @@ ExemplarDomain exemplarDomain(const Dims& exemplar, int window) {
   const std::array<int, 3> n{exemplar.x, exemplar.y, exemplar.z};
   for (std::size_t a = 0; a < 3; ++a) {
     domain.size[a] = n[a] - 2 * domain.border;
+    if (n[a] > 32767)  // synthesis stores coordinates as 16-bit integers
+      throw InputError("the exemplar volume is larger than 32767 voxels along an axis");
     if (domain.size[a] < window)
       throw InputError("the exemplar volume (" + std::to_string(exemplar.x) + "x" +
                        std::to_string(exemplar.y) + "x" + std::to_string(exemplar.z) + ") is too small for " +
@@ -204,7 +206,6 @@ AppearanceLevel buildAppearanceLevel(const DenseVolume& exemplar, const Exemplar
   const DenseVolume level = stackLevel(exemplar, spacing);
   const Pca pca = fitWindowPca(level, domain, spacing, options);
   AppearanceLevel out;
-  out.spacing = spacing;
   out.dims = pca.dims();
   out.keptVariance = pca.keptVariance();
   out.features = projectAll(level, domain, spacing, options, pca);

@@ -39,7 +39,6 @@ ExemplarDomain exemplarDomain(const Dims& exemplar, int window);
 
 /// One level of the Gaussian stack in appearance space.
 struct AppearanceLevel {
-  int spacing = 1;          ///< exemplar voxels between neighbourhood samples (h_l)
   int dims = 0;             ///< feature dimensions
   double keptVariance = 0;  ///< of the window vectors, by the PCA
   /// Share of voxels whose set has members inside another's exclusion cube: too few similar voxels

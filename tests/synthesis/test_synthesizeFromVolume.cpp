@@ -84,19 +84,24 @@ TEST(SynthesizeFromVolume, SameVolumeAtAnyThreadCount) {
 
 TEST(SynthesizeFromVolume, RegionEqualsTheSameBoxOfTheWholeVolume) {
   const DenseVolume exemplar = tiledVolume(6, 30, 9);
-  VolumeSynthesisOptions o = smallOptions(40);
-  o.dims = {40, 36, 44};
-  const VolumeSynthesisResult whole = synthesizeFromVolume(exemplar, o);
-  o.region = VoxelBox{{3, 17, 30}, {21, 36, 41}};
-  const VolumeSynthesisResult part = synthesizeFromVolume(exemplar, o);
-  ASSERT_EQ(part.values.dims, (Dims{18, 19, 11}));
-  int differing = 0;
-  for (int k = 0; k < 11; ++k)
-    for (int j = 0; j < 19; ++j)
-      for (int i = 0; i < 18; ++i)
-        differing += part.source[part.values.dims.index(i, j, k)] !=
-                     whole.source[whole.values.dims.index(i + 3, j + 17, k + 30)];
-  EXPECT_EQ(differing, 0);
+  const Dims dims{40, 36, 44};
+  const FrameField slant3d = builtinFrameField("slant3d", dims);
+  for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
+    VolumeSynthesisOptions o = smallOptions(40);
+    o.dims = dims;
+    o.field = field;
+    const VolumeSynthesisResult whole = synthesizeFromVolume(exemplar, o);
+    o.region = VoxelBox{{3, 17, 30}, {21, 36, 41}};
+    const VolumeSynthesisResult part = synthesizeFromVolume(exemplar, o);
+    ASSERT_EQ(part.values.dims, (Dims{18, 19, 11}));
+    int differing = 0;
+    for (int k = 0; k < 11; ++k)
+      for (int j = 0; j < 19; ++j)
+        for (int i = 0; i < 18; ++i)
+          differing += part.source[part.values.dims.index(i, j, k)] !=
+                       whole.source[whole.values.dims.index(i + 3, j + 17, k + 30)];
+    EXPECT_EQ(differing, 0) << (field ? "slant3d" : "isometric");
+  }
 }
 
 TEST(SynthesizeFromVolume, RefusesBadInput) {
