@@ -193,8 +193,9 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
                     {"exemplar", fs::path(job.exemplar).filename().string()}};
   report["outputs"] = {{"vdb", job.output}};
   if (job.preview) {
-    SolidVolume view = solid;
-    if (view.color.empty()) view.color = displayColors(DenseVolume{view.dims, 1, view.density});
+    SolidVolume view;  // the colours only: the slices need nothing else
+    view.dims = solid.dims;
+    view.color = solid.color.empty() ? displayColors(DenseVolume{solid.dims, 1, solid.density}) : solid.color;
     report["outputs"]["previews"] = writePreviews(*job.preview, middleSlice(exemplar), view);
   }
   writeVdb(job.output, std::move(solid));
