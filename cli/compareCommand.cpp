@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/optionChecks.h"
 #include "pipeline/compareJob.h"
 
 namespace solidtex::cli {
@@ -35,17 +36,17 @@ Action addCompareCommand(CLI::App& app) {
       "compare",
       "Compare a solid with its photo: a particle solid's statistics or a continuous solid's slices");
   command->add_option("photo", job->photo, "The photo or exemplar the solid was made from")->required();
-  command->add_option("volume", job->volume, "The solid (.vdb)")->required()->check(CLI::ExistingFile);
+  command->add_option("volume", job->volume, "The solid (.vdb)")->required();
   command
       ->add_option("--mode", *mode,
                    "auto (particles when the .vdb has a particle_id grid), particles or continuous")
       ->capture_default_str();
+  command->add_option("--reference", job->reference,
+                      "Continuous: a second photo of the material; every figure also as a ratio to its own");
   command
-      ->add_option("--reference", job->reference,
-                   "Continuous: a second photo of the material; every figure also as a ratio to its own")
-      ->check(CLI::ExistingFile);
-  command->add_option("--scale", job->voxelsPerPixel,
-                      "Voxels per photo pixel (default: from the .vdb's metadata)");
+      ->add_option("--scale", job->voxelsPerPixel,
+                   "Voxels per photo pixel (default: from the .vdb's metadata)")
+      ->check(aboveAtMost(0, 64));
   command
       ->add_option("--axis-planes", job->sections.offsetsPerAxis,
                    "Axis-aligned section planes per axis (1-4096)")
@@ -59,11 +60,9 @@ Action addCompareCommand(CLI::App& app) {
   command->add_option("--plot", job->plot,
                       "Write a PNG: particles, the histograms and CDFs; continuous, the exemplar, the "
                       "reference and two slices side by side");
-  command
-      ->add_option(
-          "--truth", job->truth,
-          "The 3D truth the photo was cut from (.vdb, as `solidtex truth` writes): compare particle volumes")
-      ->check(CLI::ExistingFile);
+  command->add_option(
+      "--truth", job->truth,
+      "The 3D truth the photo was cut from (.vdb, as `solidtex truth` writes): compare particle volumes");
   addSegmentationOptions(*command, job->segmentation);
   return [job, mode] {
     job->mode = parseCompareMode(*mode);

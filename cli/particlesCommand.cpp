@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/optionChecks.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
@@ -27,9 +28,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (instead of --size)")
       ->expected(3)
       ->excludes(sizeOption);
-  command->add_option(
-      "--scale", job->voxelsPerPixel,
-      "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)");
+  command
+      ->add_option(
+          "--scale", job->voxelsPerPixel,
+          "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)")
+      ->check(aboveAtMost(0, 64));
   command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")
       ->capture_default_str();
   command

@@ -33,10 +33,8 @@ Action addSynthesize2dCommand(CLI::App& app) {
   command->add_option("--seed", o.seed, "Random seed: same seed, same image")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
-  command
-      ->add_option("--reference", job->reference,
-                   "A second photo of the material: the report's quality also as ratios to it")
-      ->check(CLI::ExistingFile);
+  command->add_option("--reference", job->reference,
+                      "A second photo of the material: the report's quality also as ratios to it");
   command->add_flag("!--quiet", job->progress, "No progress line");
   command->add_flag("!--no-quality", job->measure,
                     "Do not measure the result against the exemplar (the report's quality)");

@@ -35,7 +35,8 @@ struct ExemplarKindOptions {
 
 void refuseOptionsOf(const std::vector<CLI::Option*>& options, const std::string& kind) {
   for (const CLI::Option* option : options)
-    if (option->count() > 0) throw InputError(option->get_name() + " applies to " + kind + " exemplars only");
+    if (option->count() > 0)
+      throw OptionError(option->get_name() + " applies to " + kind + " exemplars only");
 }
 
 // Volume exemplars (Su 2008): the options only they have, written into `job`.
@@ -114,10 +115,8 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--pca-dims", o.pcaDims, "PCA dimensions of neighbourhoods (1-512; volume exemplars: 16)")
       ->capture_default_str();
-  command
-      ->add_option("--control", job->control,
-                   "Photo exemplars: greyscale map the exemplar's size: brighter appears more")
-      ->check(CLI::ExistingFile);
+  command->add_option("--control", job->control,
+                      "Photo exemplars: greyscale map the exemplar's size: brighter appears more");
   addVolumeOptions(*command, *volumeJob, *dims, *region, *kinds);
   for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
                            "--similarity-search", "--iterations", "--control"})

@@ -11,4 +11,11 @@ public:
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
+/// An option's value out of its range or contradicting another option: the command line is wrong
+/// (exit code 2), as for options the parser itself refuses.
+class OptionError : public InputError {
+public:
+  explicit OptionError(const std::string& what) : InputError(what) {}
+};
+
 }  // namespace solidtex

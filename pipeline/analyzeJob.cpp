@@ -8,11 +8,20 @@
 namespace solidtex {
 
 nlohmann::json runAnalyze(const AnalyzeJob& job) {
+  OutputFiles outputs;
+  outputs.addInput(job.photo);
+  if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
+  if (job.labels) outputs.addFile("--labels", *job.labels, {".png"});
+  addReport(outputs, job.report);
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   nlohmann::json report = toJson(stats);
-  if (job.labels) writeImage(*job.labels, drawLabels(photo, stats));
-  if (job.report) writeJsonFile(*job.report, report);
+  if (job.labels) {
+    const cv::Mat labels = drawLabels(photo, stats);
+    outputs.write(*job.labels, [&](const std::string& path) { writeImage(path, labels); });
+  }
+  writeReport(outputs, job.report, report);
+  outputs.commit();
   return report;
 }
 

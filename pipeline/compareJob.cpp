@@ -99,13 +99,13 @@ int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
   return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
-nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume) {
+nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume, OutputFiles& outputs) {
   if (job.reference)
-    throw InputError("--reference is for continuous solids; give --truth for particle solids");
+    throw OptionError("--reference is for continuous solids; give --truth for particle solids");
   if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096)
-    throw InputError("--axis-planes must be in [1, 4096]");
+    throw OptionError("--axis-planes must be in [1, 4096]");
   if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000)
-    throw InputError("--oblique-planes must be in [0, 100000]");
+    throw OptionError("--oblique-planes must be in [0, 100000]");
   if (volume.particleId.empty())
     throw InputError(job.volume + " has no particle_id grid: not a particle solid");
   const cv::Mat photo = loadPhoto(job.photo);
@@ -157,7 +157,10 @@ nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume
       {"particle_diameter", diameter}};
   if (job.truth)
     report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
-  if (job.plot) writeImage(*job.plot, plotComparison(data, report));
+  if (job.plot) {
+    const cv::Mat plot = plotComparison(data, report);
+    outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
+  }
   return report;
 }
 
@@ -186,8 +189,8 @@ cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const 
   return out;
 }
 
-nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volume) {
-  if (job.truth) throw InputError("--truth is for particle solids; give --reference for continuous solids");
+nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volume, OutputFiles& outputs) {
+  if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
   const cv::Mat exemplar = loadPhoto(job.photo);
   const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
@@ -197,7 +200,10 @@ nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volum
                            {"dims", {volume.dims.x, volume.dims.y, volume.dims.z}},
                            {"quality", continuousQualityJson(quality, job.quality)}};
   if (job.reference) report["reference"] = *job.reference;
-  if (job.plot) writeImage(*job.plot, continuousPlot(exemplar, reference, volume));
+  if (job.plot) {
+    const cv::Mat plot = continuousPlot(exemplar, reference, volume);
+    outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
+  }
   return report;
 }
 
@@ -207,15 +213,23 @@ CompareMode parseCompareMode(const std::string& name) {
   if (name == "auto") return CompareMode::Auto;
   if (name == "particles") return CompareMode::Particles;
   if (name == "continuous") return CompareMode::Continuous;
-  throw InputError("unknown compare mode '" + name + "' (expected auto, particles or continuous)");
+  throw OptionError("unknown compare mode '" + name + "' (expected auto, particles or continuous)");
 }
 
 nlohmann::json runCompare(const CompareJob& job) {
+  OutputFiles outputs;
+  for (const auto& input : {std::optional(job.photo), std::optional(job.volume), job.truth, job.reference,
+                            job.segmentation.maskPath})
+    if (input) outputs.addInput(*input);
+  if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
+  addReport(outputs, job.report);
   const SolidVolume volume = readVdb(job.volume);
   const bool particles =
       job.mode == CompareMode::Particles || (job.mode == CompareMode::Auto && !volume.particleId.empty());
-  nlohmann::json report = particles ? compareParticles(job, volume) : compareContinuous(job, volume);
-  if (job.report) writeJsonFile(*job.report, report);
+  nlohmann::json report =
+      particles ? compareParticles(job, volume, outputs) : compareContinuous(job, volume, outputs);
+  writeReport(outputs, job.report, report);
+  outputs.commit();
   return report;
 }
 

@@ -4,41 +4,45 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include <tbb/info.h>
 
 #include "common/Error.h"
+#include "common/memoryBudget.h"
 #include "common/secondsSince.h"
+#include "common/writeFileBytes.h"
 
 namespace solidtex {
 
-void checkOutputPath(const std::string& path, const std::string& extension) {
-  namespace fs = std::filesystem;
-  const fs::path out(path);
-  if (out.extension() != extension) throw InputError("output " + path + " must end in " + extension);
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent))
-    throw InputError("cannot write " + path + ": folder " + parent.string() + " does not exist");
+void writeJsonFile(const std::string& path, const nlohmann::json& json) {
+  const std::string text = json.dump(2) + '\n';
+  writeFileBytes(path, text.data(), text.size());
 }
 
-void writeJsonFile(const std::string& path, const nlohmann::json& json) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
-  {
-    std::ofstream out(temp);
-    if (!out) throw InputError("cannot write report " + path);
-    out << json.dump(2) << '\n';
-    if (!out) throw InputError("cannot write report " + path);
-  }
-  std::error_code ec;
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw InputError("cannot write report " + path);
-  }
+void addReport(OutputFiles& outputs, const std::optional<std::string>& report) {
+  if (report) outputs.addFile("--report", *report, {".json"});
+}
+
+void addVolumeOutputs(OutputFiles& outputs, const std::string& vdb, const std::optional<std::string>& report,
+                      const std::optional<std::string>& preview) {
+  outputs.addFile("-o", vdb, {".vdb"});
+  addReport(outputs, report);
+  if (preview) outputs.addFolder("--preview", *preview);
+}
+
+void writeReport(OutputFiles& outputs, const std::optional<std::string>& report, const nlohmann::json& json) {
+  if (report) outputs.write(*report, [&](const std::string& path) { writeJsonFile(path, json); });
+}
+
+void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel) {
+  constexpr double kEveryRun = 160.0 * 1024 * 1024;
+  if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0) return;  // the command's own checks say what is wrong
+  const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
+  const std::string size =
+      std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+  if (voxels > 4294967295.0)
+    throw OptionError(what + " of " + size + " voxels: more than 2^32 - 1 voxels, the most a volume holds");
+  requireMemory(what + " of " + size + " voxels", voxels * bytesPerVoxel + kEveryRun);
 }
 
 double peakMemoryMiB() {
@@ -50,7 +54,7 @@ double peakMemoryMiB() {
 namespace {
 
 std::size_t checkedThreads(int threads) {
-  if (threads < 0) throw InputError("--threads must not be negative (0 = all cores)");
+  if (threads < 0) throw OptionError("--threads must not be negative (0 = all cores)");
   return std::size_t(threads > 0 ? threads : tbb::info::default_concurrency());
 }
 
@@ -76,8 +80,10 @@ void ProgressLine::update(const std::string& text) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   const bool terminal = isatty(STDERR_FILENO);
-  const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(2000);
-  if (dirty_ && now - last_ < interval) return;
+  // A log gets a line every ten seconds at most; a terminal sees the line rewritten ten times a second.
+  const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(10000);
+  if (started_ && now - last_ < interval) return;
+  started_ = true;
   last_ = now;
   std::fprintf(stderr, terminal ? "\r\033[K%s" : "%s\n", text.c_str());
   dirty_ = terminal;

@@ -1,17 +1,33 @@
 #pragma once
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include <tbb/global_control.h>
 #include <nlohmann/json.hpp>
 
+#include "common/Grid.h"
+#include "common/OutputFiles.h"
+
 namespace solidtex {
 
-/// Refuses (InputError) an output path without the given extension (".vdb") or in a missing folder.
-void checkOutputPath(const std::string& path, const std::string& extension);
-
-/// Writes JSON to `path` through a temporary name, so no partial report is ever left.
+/// Writes JSON to `path`, checking every write (commands write through OutputFiles).
 void writeJsonFile(const std::string& path, const nlohmann::json& json);
+
+/// Declares `--report`, when given, as one of the command's outputs (a .json file).
+void addReport(OutputFiles& outputs, const std::optional<std::string>& report);
+/// Declares a volume job's outputs: the .vdb, and the report and preview folder when given.
+void addVolumeOutputs(OutputFiles& outputs, const std::string& vdb, const std::optional<std::string>& report,
+                      const std::optional<std::string>& preview);
+
+/// Writes the report, when asked for, through `outputs`.
+void writeReport(OutputFiles& outputs, const std::optional<std::string>& report, const nlohmann::json& json);
+
+/// Refuses (InputError), before any of it is allocated, a volume of `dims` that needs more memory
+/// than there is: `bytesPerVoxel` is the command's measured peak per voxel (docs/performance.md),
+/// plus what every run holds (libraries, the photo). Also refuses more voxels than 32-bit indices
+/// reach.
+void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel);
 
 /// Peak resident memory of this process so far, in MiB.
 double peakMemoryMiB();
@@ -50,6 +66,7 @@ public:
 private:
   bool enabled_;
   bool dirty_ = false;
+  bool started_ = false;
   std::chrono::steady_clock::time_point last_{};
 };
 

@@ -21,17 +21,19 @@
 namespace solidtex {
 namespace {
 
+// Peak resident memory per voxel of the placement block: 691 MiB for gravel at 256^3 with walls.
+constexpr double kPlacementBytesPerVoxel = 40;
+
 void checkJob(const ParticleSolidJob& job) {
   for (int edge : {job.dims.x, job.dims.y, job.dims.z})
     if (edge < 8 || edge > kMaxVolumeEdge)
-      throw InputError("volume size " + std::to_string(edge) + " is out of range [8, " +
-                       std::to_string(kMaxVolumeEdge) + "]");
+      throw OptionError("volume size " + std::to_string(edge) + " is out of range [8, " +
+                        std::to_string(kMaxVolumeEdge) + "]");
   if (job.voxelsPerPixel < 0 || job.voxelsPerPixel > 64)
-    throw InputError("--scale must be in (0, 64] voxels per pixel");
-  if (job.particles.views < 3 || job.particles.views > 5) throw InputError("--views must be 3, 4 or 5");
+    throw OptionError("--scale must be in (0, 64] voxels per pixel");
+  if (job.particles.views < 3 || job.particles.views > 5) throw OptionError("--views must be 3, 4 or 5");
   if (job.particles.shapes < 1 || job.particles.shapes > 4096)
-    throw InputError("--shapes must be in [1, 4096]");
-  checkOutputPath(job.output, ".vdb");
+    throw OptionError("--shapes must be in [1, 4096]");
 }
 
 double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
@@ -83,7 +85,7 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
 Boundary parseBoundary(const std::string& name) {
   if (name == "open") return Boundary::Open;
   if (name == "walls") return Boundary::Walls;
-  throw InputError("unknown boundary '" + name + "': use open or walls");
+  throw OptionError("unknown boundary '" + name + "': use open or walls");
 }
 
 const char* boundaryName(Boundary boundary) { return boundary == Boundary::Open ? "open" : "walls"; }
@@ -132,6 +134,11 @@ ParticleFactory makeFactory(const ParticleSolidJob& job, const ExemplarStats& st
 
 nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   checkJob(job);
+  requireVolumeMemory("the volume", job.dims, kPlacementBytesPerVoxel);
+  OutputFiles outputs;
+  outputs.addInput(job.photo);
+  if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
+  addVolumeOutputs(outputs, job.output, job.report, job.preview);
   PhaseTimer timer;
   ProgressLine progress(job.progress);
 
@@ -154,6 +161,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   timer.start("placement");
   const int margin = job.boundary == Boundary::Open ? openBoundaryMargin(stats, particleScale) : 0;
   const Dims placed{job.dims.x + 2 * margin, job.dims.y + 2 * margin, job.dims.z + 2 * margin};
+  requireVolumeMemory(margin > 0 ? "placing particles in a block" : "placing particles", placed,
+                      kPlacementBytesPerVoxel);
   auto field = makeSpaciousnessField(job.placer, placed, placementRadiusCap(stats, particleScale));
   PlacementOptions placementOptions;
   placementOptions.dims = placed;
@@ -189,9 +198,9 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   timer.start("write");
-  nlohmann::json outputs = {{"vdb", job.output}};
-  if (job.preview) outputs["previews"] = writePreviews(*job.preview, photo, volume);
-  writeVdb(job.output, std::move(volume));
+  nlohmann::json written = {{"vdb", job.output}};
+  if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, volume);
+  outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(volume)); });
 
   nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
                            {"command", "particles"},
@@ -203,7 +212,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},
-                           {"outputs", outputs}};
+                           {"outputs", written}};
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
   report["smoothing"] = {{"radius", smoothing.radius}, {"fitted", !job.smoothing.has_value()}};
@@ -220,7 +229,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   }
   report["time_seconds"] = timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
-  if (job.report) writeJsonFile(*job.report, report);
+  writeReport(outputs, job.report, report);
+  outputs.commit();
   return report;
 }
 

@@ -36,8 +36,13 @@ nlohmann::json toJson(const BestFitCheck& check) {
 
 nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   if (job.size < 16 || job.size > 512)
-    throw InputError("--size must be in [16, 512], got " + std::to_string(job.size));
-  if (job.particles < 0) throw InputError("--particles must not be negative");
+    throw OptionError("--size must be in [16, 512], got " + std::to_string(job.size));
+  if (job.particles < 0) throw OptionError("--particles must not be negative");
+  OutputFiles outputs;
+  outputs.addInput(job.photo);
+  if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
+  if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
+  addReport(outputs, job.report);
   ProgressLine progress(job.progress);
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
@@ -85,8 +90,12 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
                            {"exact_seconds", evaluation.exactSeconds},
                            {"fields", fields},
                            {"peak_memory_mib", peakMemoryMiB()}};
-  if (job.plot) writeImage(*job.plot, plotSpaciousnessErrors(errors));
-  if (job.report) writeJsonFile(*job.report, report);
+  if (job.plot) {
+    const cv::Mat plot = plotSpaciousnessErrors(errors);
+    outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
+  }
+  writeReport(outputs, job.report, report);
+  outputs.commit();
   return report;
 }
 

@@ -32,7 +32,11 @@ nlohmann::json levelsJson(const TextureSynthesisResult& r) {
 
 nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   namespace fs = std::filesystem;
-  checkOutputPath(job.output, ".png");
+  OutputFiles outputs;
+  outputs.addInput(job.exemplar);
+  if (job.reference) outputs.addInput(*job.reference);
+  outputs.addFile("-o", job.output, {".png"});
+  addReport(outputs, job.report);
   const cv::Mat exemplar = loadPhoto(job.exemplar);
   const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
   ProgressLine progress(job.progress);
@@ -65,9 +69,10 @@ nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   }
   progress.done();
   report["peak_memory_mib"] = peakMemoryMiB();
-  writeImage(job.output, result.image);
+  outputs.write(job.output, [&](const std::string& path) { writeImage(path, result.image); });
   report["outputs"] = {{"png", job.output}};
-  if (job.report) writeJsonFile(*job.report, report);
+  writeReport(outputs, job.report, report);
+  outputs.commit();
   return report;
 }
 

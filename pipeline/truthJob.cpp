@@ -36,11 +36,14 @@ nlohmann::json optionsJson(const ParticleTruthOptions& options) {
 
 }  // namespace
 
+// Peak resident memory per voxel: the ids, the colour and the .vdb's trees built from them.
+constexpr double kTruthBytesPerVoxel = 32;
+
 nlohmann::json runTruth(const TruthJob& job) {
-  ParticleTruth truth = makeParticleTruth(job.truth);  // refuses bad options before anything is written
-  std::error_code error;
-  std::filesystem::create_directories(job.folder, error);
-  if (error) throw InputError("cannot create folder " + job.folder + ": " + error.message());
+  requireVolumeMemory("the truth", job.truth.dims, kTruthBytesPerVoxel);
+  OutputFiles outputs;
+  outputs.addFolder("-o", job.folder);
+  ParticleTruth truth = makeParticleTruth(job.truth);
 
   std::vector<int> perClass(job.truth.classes.size(), 0);
   for (int c : truth.classOf) ++perClass[std::size_t(c)];
@@ -56,11 +59,15 @@ nlohmann::json runTruth(const TruthJob& job) {
       {"volumes", truth.volumes},
   };
   const std::filesystem::path folder(job.folder);
-  writeImage((folder / "photo.png").string(), truth.photo);
+  outputs.write((folder / "photo.png").string(),
+                [&](const std::string& path) { writeImage(path, truth.photo); });
   truth.volume.metadata["exemplar"] = "photo.png";
   truth.volume.metadata["seed"] = std::to_string(job.truth.seed);
-  writeVdb((folder / "truth.vdb").string(), std::move(truth.volume));
-  writeJsonFile((folder / "truth.json").string(), report);
+  outputs.write((folder / "truth.vdb").string(),
+                [&](const std::string& path) { writeVdb(path, std::move(truth.volume)); });
+  outputs.write((folder / "truth.json").string(),
+                [&](const std::string& path) { writeJsonFile(path, report); });
+  outputs.commit();
   return report;
 }
 

@@ -9,7 +9,7 @@ namespace solidtex {
 PlacerKind parsePlacerKind(const std::string& name) {
   for (PlacerKind kind : {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay})
     if (name == placerName(kind)) return kind;
-  throw InputError("unknown placer '" + name + "': expected discrete, brute, edt or delaunay");
+  throw OptionError("unknown placer '" + name + "': expected discrete, brute, edt or delaunay");
 }
 
 const char* placerName(PlacerKind kind) {
@@ -38,7 +38,7 @@ std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims d
     case PlacerKind::Delaunay:
       return detail::makeDelaunayField(dims, maxRadius);
   }
-  throw InputError("unknown placer kind");
+  throw OptionError("unknown placer kind");
 }
 
 }  // namespace solidtex

@@ -466,7 +466,7 @@ private:
 Arrangement parseArrangement(const std::string& name) {
   if (name == "best-fit") return Arrangement::BestFit;
   if (name == "uniform") return Arrangement::Uniform;
-  throw InputError("unknown arrangement '" + name + "': use best-fit or uniform");
+  throw OptionError("unknown arrangement '" + name + "': use best-fit or uniform");
 }
 
 const char* arrangementName(Arrangement arrangement) {

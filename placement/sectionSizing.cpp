@@ -129,7 +129,7 @@ double borderCorrection(const ExemplarStats& stats, const Particle2D& p) {
 Sizing parseSizing(const std::string& name) {
   if (name == "bbox") return Sizing::Bbox;
   if (name == "sections") return Sizing::Sections;
-  throw InputError("unknown sizing '" + name + "': use bbox or sections");
+  throw OptionError("unknown sizing '" + name + "': use bbox or sections");
 }
 
 const char* sizingName(Sizing sizing) { return sizing == Sizing::Bbox ? "bbox" : "sections"; }

@@ -14,12 +14,18 @@ inline constexpr int kMinPhotoSide = 8;
 /// CV_32FC3 sRGB in [0,1], R,G,B order (alpha is dropped; float images tagged linear are encoded
 /// to sRGB; values are clamped to [0,1]). Throws InputError, naming the file and the problem,
 /// for a missing or unreadable file, a truncated image, or a size outside
-/// [kMinPhotoSide, kMaxPhotoSide] (checked on the header, before any pixel is decoded).
+/// [kMinPhotoSide, kMaxPhotoSide] or more memory than is available (photoMemoryBytes; both checked
+/// on the header, before any pixel is decoded). What the codec libraries print on stderr is kept
+/// off the terminal: it goes into the error's message, or nowhere when the image reads.
 cv::Mat loadPhoto(const std::string& path);
 
+/// Bytes that loading and analysing (analyzeExemplar) a width x height photo take at their peak;
+/// loadPhoto refuses, before decoding, a photo whose estimate exceeds availableMemoryBytes().
+double photoMemoryBytes(int width, int height);
+
 /// Writes a CV_32FC3 sRGB [0,1] or CV_8UC3 image (R,G,B order), or a one-channel CV_32F [0,1] /
-/// CV_8U grey image, as an 8-bit PNG. Writes to a temporary name beside `path` and renames, so no
-/// partial file is left. Throws InputError when the file cannot be written.
+/// CV_8U grey image, as an 8-bit PNG, checking every write. Throws InputError when the file cannot
+/// be written (commands write through OutputFiles).
 void writeImage(const std::string& path, const cv::Mat& srgb);
 
 }  // namespace solidtex

@@ -17,6 +17,7 @@
 #include <Eigen/LU>
 
 #include "common/Error.h"
+#include "voxel/readVdbGrids.h"
 #include "voxel/writeVdbGrids.h"
 
 namespace solidtex {
@@ -131,28 +132,21 @@ FrameField builtinFrameField(const std::string& name, const Dims& dims) {
   }
   std::string valid;
   for (const auto& n : builtinFrameFieldNames()) valid += (valid.empty() ? "" : ", ") + n;
-  throw InputError("unknown frame field \"" + name + "\" (valid: " + valid + ")");
+  throw OptionError("unknown frame field \"" + name + "\" (valid: " + valid + ")");
 }
 
 FrameField readFrameField(const std::string& path, const Dims& dims) {
   requirePositive(dims, "cannot read " + path);
-  openvdb::initialize();
-  if (!std::filesystem::exists(path)) throw InputError("cannot read " + path + ": no such file");
+  const VdbContents contents = readVdbGrids(path);
   openvdb::Vec3SGrid::Ptr grids[3];
-  try {
-    openvdb::io::File file(path);
-    file.open();
-    for (int a = 0; a < 3; ++a) {
-      if (!file.hasGrid(kAxisGridNames[a]))
-        throw InputError("cannot read " + path + ": no grid \"" + kAxisGridNames[a] +
-                         "\" (a frame field needs Vec3SGrids axis_x, axis_y and axis_z)");
-      grids[a] = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid(kAxisGridNames[a]));
-      if (!grids[a])
-        throw InputError("cannot read " + path + ": grid \"" + kAxisGridNames[a] + "\" is not a Vec3SGrid");
-    }
-    file.close();
-  } catch (const openvdb::Exception& e) {
-    throw InputError("cannot read " + path + ": " + e.what());
+  for (int a = 0; a < 3; ++a) {
+    const auto grid = findGrid(contents, kAxisGridNames[a]);
+    if (!grid)
+      throw InputError("cannot read " + path + ": no grid \"" + kAxisGridNames[a] +
+                       "\" (a frame field needs Vec3SGrids axis_x, axis_y and axis_z)");
+    grids[a] = openvdb::gridPtrCast<openvdb::Vec3SGrid>(grid);
+    if (!grids[a])
+      throw InputError("cannot read " + path + ": grid \"" + kAxisGridNames[a] + "\" is not a Vec3SGrid");
   }
 
   openvdb::CoordBBox covered;

@@ -322,7 +322,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
   inRange("--corrections", o.corrections, 0, 8);
   inRange("--levels", o.levels, 0, 11);
   if (o.window < 3 || o.window > 9 || o.window % 2 == 0)
-    throw InputError("--appearance must be odd and in [3, 9], got " + std::to_string(o.window));
+    throw OptionError("--appearance must be odd and in [3, 9], got " + std::to_string(o.window));
   if (o.field && !(o.field->dims == o.dims))
     throw std::logic_error("synthesizeFromVolume: field dims differ from the output's");
   if (o.region) {
@@ -373,9 +373,9 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
   const ExemplarDomain domain = synthesis::exemplarDomain(exemplar.dims, o.window);
   const int allowed = correctableLevels(domain, o.window);
   if (o.levels > allowed)
-    throw InputError("--levels " + std::to_string(o.levels) + " is more than this exemplar allows (" +
-                     std::to_string(allowed) + ": each level's " + std::to_string(o.window) +
-                     "^3 window times its spacing must fit in half the exemplar)");
+    throw OptionError("--levels " + std::to_string(o.levels) + " is more than this exemplar allows (" +
+                      std::to_string(allowed) + ": each level's " + std::to_string(o.window) +
+                      "^3 window times its spacing must fit in half the exemplar)");
   const int corrected = o.levels > 0 ? o.levels : allowed;
 
   VolumeSynthesisResult result;

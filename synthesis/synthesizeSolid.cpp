@@ -57,7 +57,7 @@ std::string distanceName(NeighborhoodDistance distance) {
 NeighborhoodDistance parseDistance(const std::string& name) {
   if (name == "rgb") return NeighborhoodDistance::Rgb;
   if (name == "wavelet") return NeighborhoodDistance::Wavelet;
-  throw InputError("unknown neighbourhood distance '" + name + "' (expected rgb or wavelet)");
+  throw OptionError("unknown neighbourhood distance '" + name + "' (expected rgb or wavelet)");
 }
 
 std::string similaritySearchName(SimilaritySearch search) {
@@ -76,13 +76,13 @@ SimilaritySearch parseSimilaritySearch(const std::string& name) {
   for (SimilaritySearch s :
        {SimilaritySearch::Automatic, SimilaritySearch::Exact, SimilaritySearch::Approximate})
     if (name == similaritySearchName(s)) return s;
-  throw InputError("unknown similarity search '" + name + "' (expected auto, exact or approximate)");
+  throw OptionError("unknown similarity search '" + name + "' (expected auto, exact or approximate)");
 }
 
 Method parseMethod(const std::string& name) {
   for (Method m : {Method::ChenWang, Method::Kopf, Method::Skeletal})
     if (name == methodName(m)) return m;
-  throw InputError("unknown synthesis method '" + name + "' (expected chen-wang, kopf or skeletal)");
+  throw OptionError("unknown synthesis method '" + name + "' (expected chen-wang, kopf or skeletal)");
 }
 
 namespace {
@@ -95,41 +95,41 @@ std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_st
 std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
   if (exemplar.empty()) throw InputError("exemplar image is empty");
   if (o.levels < 1 || o.levels > 8)
-    throw InputError("--levels " + std::to_string(o.levels) + " is out of range (1 to 8)");
+    throw OptionError("--levels " + std::to_string(o.levels) + " is out of range (1 to 8)");
   if (o.size < 2 || o.size > 1024)
-    throw InputError("--size " + std::to_string(o.size) + " is out of range (2 to 1024)");
-  if (o.k < 1 || o.k > 64) throw InputError("--k " + std::to_string(o.k) + " is out of range (1 to 64)");
+    throw OptionError("--size " + std::to_string(o.size) + " is out of range (2 to 1024)");
+  if (o.k < 1 || o.k > 64) throw OptionError("--k " + std::to_string(o.k) + " is out of range (1 to 64)");
   if (o.iterations < 1 || o.iterations > 100)
-    throw InputError("--iterations " + std::to_string(o.iterations) + " is out of range (1 to 100)");
+    throw OptionError("--iterations " + std::to_string(o.iterations) + " is out of range (1 to 100)");
   if (o.pcaDims < 1 || o.pcaDims > 512)
-    throw InputError("--pca-dims " + std::to_string(o.pcaDims) + " is out of range (1 to 512)");
-  if (o.threads < 0) throw InputError("--threads must not be negative");
+    throw OptionError("--pca-dims " + std::to_string(o.pcaDims) + " is out of range (1 to 512)");
+  if (o.threads < 0) throw OptionError("--threads must not be negative");
   if (o.sparseStep < 1 || o.coherenceRadius < 0 || o.histogramBins < 1)
     throw InputError("invalid synthesis tuning options");
   if (o.method == Method::Skeletal && (o.waveletLevels < 1 || o.waveletLevels >= o.levels))
-    throw InputError("--wavelet-levels " + std::to_string(o.waveletLevels) +
-                     " must be at least 1 and below --levels " + std::to_string(o.levels) +
-                     ": the coarsest level is optimised");
+    throw OptionError("--wavelet-levels " + std::to_string(o.waveletLevels) +
+                      " must be at least 1 and below --levels " + std::to_string(o.levels) +
+                      ": the coarsest level is optimised");
   std::vector<int> n = o.neighborhoods;
   if (n.size() == 1) n.assign(o.levels, n[0]);
   if (int(n.size()) != o.levels)
-    throw InputError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) +
-                     " sizes but --levels is " + std::to_string(o.levels));
+    throw OptionError("--neighborhoods lists " + std::to_string(o.neighborhoods.size()) +
+                      " sizes but --levels is " + std::to_string(o.levels));
   for (int s : n)
     if (s < 2 || s > 32)
-      throw InputError("neighbourhood size " + std::to_string(s) + " is out of range (2 to 32)");
+      throw OptionError("neighbourhood size " + std::to_string(s) + " is out of range (2 to 32)");
   const int factor = 1 << (o.levels - 1);
   if (o.size % factor != 0)
-    throw InputError("--size " + std::to_string(o.size) + " cannot be reached by " +
-                     std::to_string(o.levels) + " levels (must be a multiple of " + std::to_string(factor) +
-                     ")");
+    throw OptionError("--size " + std::to_string(o.size) + " cannot be reached by " +
+                      std::to_string(o.levels) + " levels (must be a multiple of " + std::to_string(factor) +
+                      ")");
   for (int l = 0; l < o.levels; ++l) {
     const int N = o.size >> (o.levels - 1 - l);
     if (N < n[l] || N % o.sparseStep != 0)
-      throw InputError("--size " + std::to_string(o.size) + " is too small for " + std::to_string(o.levels) +
-                       " levels: level " + std::to_string(l + 1) + " would be " + std::to_string(N) +
-                       "^3 voxels, less than its " + std::to_string(n[l]) + "x" + std::to_string(n[l]) +
-                       " neighbourhood");
+      throw OptionError("--size " + std::to_string(o.size) + " is too small for " + std::to_string(o.levels) +
+                        " levels: level " + std::to_string(l + 1) + " would be " + std::to_string(N) +
+                        "^3 voxels, less than its " + std::to_string(n[l]) + "x" + std::to_string(n[l]) +
+                        " neighbourhood");
     int w = exemplar.cols, h = exemplar.rows;
     for (int k = l; k < o.levels - 1; ++k) w /= 2, h /= 2;
     const int extent = NeighborhoodShape{n[l], o.distance == NeighborhoodDistance::Wavelet}.extent();

@@ -30,7 +30,7 @@ std::string textureMethodName(TextureMethod method) {
 TextureMethod parseTextureMethod(const std::string& name) {
   if (name == "kwatra") return TextureMethod::Kwatra;
   if (name == "skeletal") return TextureMethod::Skeletal;
-  throw InputError("unknown texture synthesis method '" + name + "' (expected kwatra or skeletal)");
+  throw OptionError("unknown texture synthesis method '" + name + "' (expected kwatra or skeletal)");
 }
 
 namespace {
@@ -63,12 +63,12 @@ std::vector<int> fittedNeighborhoods(const cv::Mat& exemplar, const TextureSynth
 /// Neighbourhood side per level (one value broadcasts); checks everything the exemplar's size decides.
 std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions& o) {
   if (exemplar.empty()) throw InputError("exemplar image is empty");
-  if (o.levels < 1 || o.levels > 8) throw InputError("--levels must be in [1, 8]");
-  if (o.iterations < 1 || o.iterations > 100) throw InputError("--iterations must be in [1, 100]");
-  if (o.pcaDims < 1 || o.pcaDims > 512) throw InputError("--pca-dims must be in [1, 512]");
+  if (o.levels < 1 || o.levels > 8) throw OptionError("--levels must be in [1, 8]");
+  if (o.iterations < 1 || o.iterations > 100) throw OptionError("--iterations must be in [1, 100]");
+  if (o.pcaDims < 1 || o.pcaDims > 512) throw OptionError("--pca-dims must be in [1, 512]");
   if (o.threads < 0 || o.sparseStep < 1) throw InputError("invalid thread count or step");
   if (o.width < 2 || o.height < 2 || o.width > 8192 || o.height > 8192)
-    throw InputError("--size must be within [2, 8192] on both sides");
+    throw OptionError("--size must be within [2, 8192] on both sides");
   const int rebuilt = o.method == TextureMethod::Skeletal ? o.waveletLevels : 0;
   if (o.method == TextureMethod::Skeletal && (o.waveletLevels < 1 || o.waveletLevels >= o.levels))
     throw InputError(
@@ -76,16 +76,16 @@ std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions
   std::vector<int> n = o.neighborhoods.empty() ? fittedNeighborhoods(exemplar, o) : o.neighborhoods;
   if (n.size() == 1) n.assign(std::size_t(o.levels), n[0]);
   if (int(n.size()) != o.levels)
-    throw InputError("--neighborhoods lists " + std::to_string(n.size()) + " sizes but --levels is " +
-                     std::to_string(o.levels));
+    throw OptionError("--neighborhoods lists " + std::to_string(n.size()) + " sizes but --levels is " +
+                      std::to_string(o.levels));
   const int multiple = (1 << (o.levels - 1)) * o.sparseStep;
   if (o.width % multiple != 0 || o.height % multiple != 0)
-    throw InputError("--size " + std::to_string(o.width) + " " + std::to_string(o.height) +
-                     " must be a multiple of " + std::to_string(multiple) + " (2^(levels-1) x the step)");
+    throw OptionError("--size " + std::to_string(o.width) + " " + std::to_string(o.height) +
+                      " must be a multiple of " + std::to_string(multiple) + " (2^(levels-1) x the step)");
   for (int l = 0; l < o.levels - rebuilt; ++l) {
     const int shift = o.levels - 1 - l;
     if (n[std::size_t(l)] < 2 || n[std::size_t(l)] > 32)
-      throw InputError("neighbourhood sides must be in [2, 32]");
+      throw OptionError("neighbourhood sides must be in [2, 32]");
     const int extent = n[std::size_t(l)] + (o.distance == NeighborhoodDistance::Wavelet ? 1 : 0);
     if ((exemplar.cols >> shift) < extent || (exemplar.rows >> shift) < extent)
       throw InputError("exemplar " + std::to_string(exemplar.cols) + "x" + std::to_string(exemplar.rows) +
@@ -94,7 +94,7 @@ std::vector<int> validate(const cv::Mat& exemplar, const TextureSynthesisOptions
                        std::to_string(exemplar.cols >> shift) + "x" + std::to_string(exemplar.rows >> shift) +
                        " there)");
     if ((o.width >> shift) < n[std::size_t(l)] || (o.height >> shift) < n[std::size_t(l)])
-      throw InputError("--size is too small for the neighbourhood at level " + std::to_string(l + 1));
+      throw OptionError("--size is too small for the neighbourhood at level " + std::to_string(l + 1));
   }
   n.resize(std::size_t(o.levels - rebuilt));
   return n;

@@ -286,7 +286,7 @@ TruthShape parseTruthShape(const std::string& name) {
   if (name == "ellipsoid") return TruthShape::Ellipsoid;
   if (name == "superellipsoid") return TruthShape::Superellipsoid;
   if (name == "polytope") return TruthShape::Polytope;
-  throw InputError("unknown truth shape '" + name + "': use ellipsoid, superellipsoid or polytope");
+  throw OptionError("unknown truth shape '" + name + "': use ellipsoid, superellipsoid or polytope");
 }
 
 const char* truthShapeName(TruthShape shape) {

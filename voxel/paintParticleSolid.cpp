@@ -44,8 +44,12 @@ cv::Mat fillFromAround(const cv::Mat& image, const cv::Mat& holes) {
   const double widest = 4.0 * std::max(image.rows, image.cols);
   for (double sigma = 1; cv::countNonZero(done) < int(done.total()) && sigma < widest; sigma *= 2) {
     cv::Mat numerator, denominator;
-    cv::GaussianBlur(weighted, numerator, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
-    cv::GaussianBlur(known, denominator, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
+    // A Gaussian much wider than the image along an axis weighs the reflected image almost
+    // evenly, so capping each axis' sigma at twice that side changes little; uncapped, OpenCV's
+    // vertical pass holds about 8 sigma rows of the image's width (a 20000x8 strip: gigabytes).
+    const double sx = std::min(sigma, 2.0 * image.cols), sy = std::min(sigma, 2.0 * image.rows);
+    cv::GaussianBlur(weighted, numerator, {0, 0}, sx, sy, cv::BORDER_REFLECT);
+    cv::GaussianBlur(known, denominator, {0, 0}, sx, sy, cv::BORDER_REFLECT);
     for (int r = 0; r < image.rows; ++r)
       for (int c = 0; c < image.cols; ++c) {
         const float w = denominator.at<float>(r, c);

@@ -1,17 +1,25 @@
 #include "voxel/vdbIO.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <new>
 #include <system_error>
 
+#include <openvdb/io/Archive.h>
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 
 #include "common/Error.h"
+#include "common/memoryBudget.h"
+#include "voxel/checkVdbLayout.h"
+#include "voxel/readVdbGrids.h"
 #include "voxel/writeVdbGrids.h"
 
 namespace solidtex {
@@ -118,7 +126,8 @@ constexpr std::size_t kUuidLength = 36;
 /// same volume gives the same bytes.
 void stampContentUuid(const std::filesystem::path& file) {
   std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
-  if (!io.is_open()) throw std::runtime_error("cannot reopen it to stamp its UUID");
+  if (!io.is_open())
+    throw InputError("cannot write " + file.string() + ": cannot reopen it to stamp its UUID");
   std::string uuid(kUuidLength, '\0');
   io.seekg(kUuidOffset);
   io.read(uuid.data(), std::streamsize(kUuidLength));
@@ -141,32 +150,34 @@ void stampContentUuid(const std::filesystem::path& file) {
                 (unsigned long long)(hash[1] & 0xffffffffffffull));
   io.seekp(kUuidOffset);
   io.write(text, std::streamsize(kUuidLength));
-  if (!io.flush()) throw std::runtime_error("writeVdb: cannot stamp the UUID");
+  if (!io.flush()) throw InputError("cannot write " + file.string() + ": cannot stamp its UUID");
 }
 
 }  // namespace
 
-void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
-  try {
-    openvdb::io::File file(temp.string());
-    file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-    file.write(grids, meta);
-    file.close();
-    stampContentUuid(temp);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    if (dynamic_cast<const std::logic_error*>(&e) || dynamic_cast<const std::bad_alloc*>(&e)) throw;
-    throw InputError("cannot write " + path + ": " + e.what());
+/// OpenVDB's own file writer does not check the stream it writes: this one writes the same bytes
+/// (a seekable archive) to a stream whose every failure is seen.
+class CheckedArchive : public openvdb::io::Archive {
+public:
+  void writeTo(std::ostream& out, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) const {
+    write(out, grids, /*seekable=*/true, meta);
   }
-  std::error_code ec;
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw InputError("cannot write " + path + ": " + ec.message());
+};
+
+void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+  try {
+    std::ofstream out(path, std::ios::out | std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno));
+    CheckedArchive archive;
+    archive.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    archive.writeTo(out, grids, meta);
+    out.close();
+    if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno ? errno : ENOSPC));
+    stampContentUuid(path);
+  } catch (const openvdb::Exception& e) {
+    throw InputError("cannot write " + path + ": " + e.what());
+  } catch (const std::ios_base::failure& e) {
+    throw InputError("cannot write " + path + ": " + e.what());
   }
 }
 
@@ -182,49 +193,134 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
 namespace {
 
 template <typename GridT, typename Value>
-void denseFrom(const openvdb::GridBase::Ptr& base, const openvdb::CoordBBox& box, std::vector<Value>& out) {
-  auto grid = openvdb::gridPtrCast<GridT>(base);
-  if (!grid) return;
+void denseFrom(const GridT& grid, const openvdb::CoordBBox& box, std::vector<Value>& out) {
   out.assign(box.volume(), Value{});
   openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(
       box, reinterpret_cast<typename GridT::ValueType*>(out.data()));
-  openvdb::tools::copyToDense(*grid, dense);
+  openvdb::tools::copyToDense(grid, dense);
+}
+
+// NaN or infinite colours and densities would travel silently through every measure.
+void checkValues(const std::string& path, const SolidVolume& volume) {
+  const auto finite = [](float v) { return std::isfinite(v); };
+  if (!std::all_of(volume.density.begin(), volume.density.end(), finite))
+    throw InputError("cannot read " + path + ": its density grid holds NaN or infinite values");
+  for (const Rgb& c : volume.color)
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+      throw InputError("cannot read " + path + ": its color grid holds NaN or infinite values");
+  if (std::any_of(volume.particleId.begin(), volume.particleId.end(), [](std::int32_t id) { return id < 0; }))
+    throw InputError("cannot read " + path + ": its particle_id grid holds negative ids");
 }
 
 }  // namespace
 
-SolidVolume readVdb(const std::string& path) {
+namespace {
+
+// OpenVDB's messages about a damaged file can quote whatever bytes it found (a "grid type" of 800
+// spaces, or of a gigabyte): keep printable characters, one space between words, and a short line.
+std::string readableReason(const std::string& what) {
+  constexpr std::size_t kLongest = 160;
+  std::string out;
+  for (const char c : what) {
+    if (out.size() >= kLongest) {
+      out += "...";
+      break;
+    }
+    const bool printable = c >= 0x21 && c <= 0x7e;
+    if (printable)
+      out += c;
+    else if (!out.empty() && out.back() != ' ')
+      out += ' ';
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out.empty() ? "damaged file" : out;
+}
+
+// What reading a file may take: a damaged block inside a grid can still ask OpenVDB for memory
+// without end. Real files expand far less than a thousandfold, their trees being sparse themselves.
+std::uint64_t readingAllowance(const std::string& path) {
+  std::error_code ec;
+  const double bytes = std::max(1024.0 * double(std::filesystem::file_size(path, ec)), double(1u << 30));
+  return std::uint64_t(std::min(bytes, double(availableMemoryBytes())));
+}
+
+template <typename GridT>
+typename GridT::Ptr typedGrid(const VdbContents& contents, const std::string& path, const std::string& name,
+                              const char* type) {
+  const auto grid = findGrid(contents, name);
+  if (!grid) return nullptr;
+  auto typed = openvdb::gridPtrCast<GridT>(grid);
+  if (!typed)
+    throw InputError("cannot read " + path + ": grid \"" + name + "\" is " + readableReason(grid->type()) +
+                     ", not " + type);
+  return typed;
+}
+
+// The dense box must be one a volume can have and memory can hold: a damaged file can claim any.
+void checkBox(const std::string& path, const openvdb::CoordBBox& box, std::size_t bytesPerVoxel) {
+  constexpr int kLongestSide = 32768;
+  const openvdb::Coord side = box.dim();
+  if (side.x() > kLongestSide || side.y() > kLongestSide || side.z() > kLongestSide)
+    throw InputError("cannot read " + path + ": its grids span " + std::to_string(side.x()) + "x" +
+                     std::to_string(side.y()) + "x" + std::to_string(side.z()) + " voxels, more than " +
+                     std::to_string(kLongestSide) + " on a side");
+  requireMemory("reading " + path + " (" + std::to_string(side.x()) + "x" + std::to_string(side.y()) + "x" +
+                    std::to_string(side.z()) + " voxels)",
+                double(box.volume()) * double(bytesPerVoxel));
+}
+
+}  // namespace
+
+VdbContents readVdbGrids(const std::string& path) {
   openvdb::initialize();
-  if (!std::filesystem::exists(path)) throw InputError("cannot read " + path + ": no such file");
-  openvdb::io::File file(path);
-  openvdb::GridPtrVecPtr grids;
-  openvdb::MetaMap::Ptr meta;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError("cannot read " + path + ": no such file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError("cannot read " + path + ": it is a folder");
+  checkVdbLayout(path);
+  VdbContents contents;
   try {
-    file.open();
-    grids = file.getGrids();
-    meta = file.getMetadata();
+    const MemoryCap cap(readingAllowance(path));
+    openvdb::io::File file(path);
+    file.open(/*delayLoad=*/false);
+    contents.grids = *file.getGrids();
+    contents.metadata = file.getMetadata();
     file.close();
-  } catch (const openvdb::Exception& e) {
-    throw InputError("cannot read " + path + ": " + e.what());
+  } catch (const std::bad_alloc&) {
+    throw InputError("cannot read " + path + ": damaged (a size in it asks for more memory than there is)");
+  } catch (const std::exception& e) {
+    throw InputError("cannot read " + path + ": not a readable OpenVDB file (" + readableReason(e.what()) +
+                     ")");
   }
-  SolidVolume volume;
+  for (const auto& grid : contents.grids)
+    if (!grid) throw InputError("cannot read " + path + ": damaged (a grid could not be read)");
+  return contents;
+}
+
+openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& name) {
+  for (const auto& grid : contents.grids)
+    if (grid->getName() == name) return grid;
+  return nullptr;
+}
+
+SolidVolume readVdb(const std::string& path) {
+  const VdbContents contents = readVdbGrids(path);
+  const auto density = typedGrid<openvdb::FloatGrid>(contents, path, "density", "float");
+  const auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
+  const auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
   openvdb::CoordBBox box;
-  for (const auto& grid : *grids)
-    if (grid->getName() == "density" || grid->getName() == "color")
-      box.expand(grid->evalActiveVoxelBoundingBox());
-  if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid");
+  if (density) box.expand(density->evalActiveVoxelBoundingBox());
+  if (color) box.expand(color->evalActiveVoxelBoundingBox());
+  if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid with active voxels");
+  checkBox(path, box,
+           (density ? sizeof(float) : 0) + (color ? sizeof(Rgb) : 0) + (ids ? sizeof(std::int32_t) : 0));
+  SolidVolume volume;
   volume.dims = {box.dim().x(), box.dim().y(), box.dim().z()};
-  for (const auto& grid : *grids) {
-    const auto& name = grid->getName();
-    if (name == "density")
-      denseFrom<openvdb::FloatGrid>(grid, box, volume.density);
-    else if (name == "color")
-      denseFrom<openvdb::Vec3SGrid>(grid, box, volume.color);
-    else if (name == "particle_id")
-      denseFrom<openvdb::Int32Grid>(grid, box, volume.particleId);
-  }
-  for (auto it = meta->beginMeta(); it != meta->endMeta(); ++it)
+  if (density) denseFrom(*density, box, volume.density);
+  if (color) denseFrom(*color, box, volume.color);
+  if (ids) denseFrom(*ids, box, volume.particleId);
+  for (auto it = contents.metadata->beginMeta(); it != contents.metadata->endMeta(); ++it)
     volume.metadata[it->first] = it->second->str();
+  checkValues(path, volume);
   return volume;
 }
 

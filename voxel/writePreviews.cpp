@@ -38,12 +38,9 @@ cv::Mat sideBySide(const std::vector<cv::Mat>& images) {
 
 }  // namespace
 
-std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& photoSrgb,
+std::vector<std::string> writePreviews(OutputFiles& outputs, const std::string& dir, const cv::Mat& photoSrgb,
                                        const SolidVolume& volume) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create preview folder " + dir + ": " + ec.message());
   const Dims& d = volume.dims;
   const Eigen::Vector3d centre((d.x - 1) * 0.5, (d.y - 1) * 0.5, (d.z - 1) * 0.5);
   const std::pair<const char*, SlicePlane> planes[] = {
@@ -57,12 +54,13 @@ std::vector<std::string> writePreviews(const std::string& dir, const cv::Mat& ph
   for (const auto& [name, plane] : planes) {
     const cv::Mat image = toHeight(colorSlice(volume, plane), kPreviewHeight);
     const std::string path = (fs::path(dir) / name).string();
-    writeImage(path, image);
+    outputs.write(path, [&](const std::string& file) { writeImage(file, image); });
     written.push_back(path);
     row.push_back(image);
   }
   const std::string montage = (fs::path(dir) / "preview.png").string();
-  writeImage(montage, sideBySide(row));
+  const cv::Mat montageImage = sideBySide(row);
+  outputs.write(montage, [&](const std::string& file) { writeImage(file, montageImage); });
   written.push_back(montage);
   return written;
 }

@@ -7,6 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/detail/distanceTransform.h"
 #include "segmentation/detail/mergeConvex.h"
 
 namespace solidtex::detail {
@@ -130,8 +131,7 @@ cv::Mat labelParticles(const cv::Mat& mask, bool split) {
     cv::connectedComponents(mask, labels, 8, CV_32S);
     return labels;
   }
-  cv::Mat dist;
-  cv::distanceTransform(mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  const cv::Mat dist = euclideanDistance(mask);
   CV_Assert(dist.isContinuous());
   Flood flood(dist);
   for (int index : floodOrder(dist)) flood.visit(index);

@@ -6,32 +6,9 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/pngBytes.h"
+
 namespace solidtex::test {
-namespace {
-
-std::uint32_t crc32(const unsigned char* data, std::size_t n) {
-  std::uint32_t crc = 0xffffffffu;
-  for (std::size_t i = 0; i < n; ++i) {
-    crc ^= data[i];
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-void putU32(std::vector<unsigned char>& out, std::uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back((unsigned char)((v >> shift) & 0xff));
-}
-
-void putChunk(std::vector<unsigned char>& out, const char* type, const std::vector<unsigned char>& body) {
-  putU32(out, std::uint32_t(body.size()));
-  std::vector<unsigned char> typed(type, type + 4);
-  typed.insert(typed.end(), body.begin(), body.end());
-  out.insert(out.end(), typed.begin(), typed.end());
-  putU32(out, crc32(typed.data(), typed.size()));
-}
-
-}  // namespace
-
 std::filesystem::path freshTempDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::filesystem::path dir =

@@ -1,11 +1,16 @@
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <vector>
+
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "common/Error.h"
+#include "common/memoryBudget.h"
+#include "segmentation/detail/CapturedStderr.h"
 #include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
@@ -149,6 +154,100 @@ TEST(SegmentationImageIO, HugeHeaderIsRefusedBeforeDecoding) {
   const fs::path path = freshTempDir() / "huge.png";
   test::writeBytes(path, test::pngHeaderClaiming(30000, 30000));
   expectInputError(path.string(), "30000x30000");
+}
+
+TEST(SegmentationImageIO, HeaderNeedingMoreMemoryThanAvailableIsRefused) {
+  const fs::path path = freshTempDir() / "large.png";
+  test::writeBytes(path, test::pngHeaderClaiming(20000, 20000));  // within the side limit
+  setMemoryLimit(std::uint64_t(1) << 30);
+  expectInputError(path.string(), "20000x20000");
+  expectInputError(path.string(), "memory");
+  setMemoryLimit(0);
+}
+
+TEST(SegmentationImageIO, ReadsInStripsAcrossWideRows) {
+  // 6000 RGB floats a row: a strip (1 MiB of floats) holds 14 rows, so this image takes several.
+  const fs::path path = freshTempDir() / "wide.png";
+  cv::Mat pattern(100, 6000, CV_8UC3);
+  for (int y = 0; y < pattern.rows; ++y)
+    for (int x = 0; x < pattern.cols; ++x)
+      pattern.at<cv::Vec3b>(y, x) = {uchar(x), uchar(y * 3), uchar(x / 256)};
+  writeImage(path.string(), pattern);
+  cv::Mat expected;
+  pattern.convertTo(expected, CV_32FC3, 1 / 255.0);
+  EXPECT_EQ(cv::norm(loadPhoto(path.string()), expected, cv::NORM_INF), 0);
+}
+
+TEST(SegmentationImageIO, ReadsTiledImages) {
+  const fs::path path = freshTempDir() / "tiled.tif";
+  const int width = 40, height = 37;
+  std::vector<std::uint8_t> pixels(std::size_t(width) * height * 3);
+  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::uint8_t(i * 7);
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out);
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  spec.tile_width = spec.tile_height = 16;
+  ASSERT_TRUE(out->open(path.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  ASSERT_TRUE(out->close());
+  const cv::Mat loaded = loadPhoto(path.string());
+  ASSERT_EQ(loaded.size(), cv::Size(width, height));
+  for (int y : {0, 15, 16, 36})
+    for (int x : {0, 17, 39})
+      for (int c = 0; c < 3; ++c)
+        EXPECT_FLOAT_EQ(loaded.at<cv::Vec3f>(y, x)[c], pixels[(std::size_t(y) * width + x) * 3 + c] / 255.0f);
+}
+
+TEST(SegmentationImageIO, CorruptPngIsAnInputErrorAndPrintsNothing) {
+  const fs::path dir = freshTempDir();
+  const fs::path whole = dir / "whole.png";
+  cv::Mat noise(64, 64, CV_8UC3);
+  cv::RNG(7).fill(noise, cv::RNG::UNIFORM, 0, 256);
+  writeImage(whole.string(), noise);
+  std::vector<unsigned char> bytes = test::readBytes(whole);
+  // Flip bytes in the middle of the pixel data (noise does not compress: it fills the file):
+  // libpng rejects the chunk and prints "libpng error: IDAT: CRC error" itself.
+  for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 16; ++i) bytes[i] ^= 0x5a;
+  const fs::path corrupt = dir / "corrupt.png";
+  test::writeBytes(corrupt, bytes);
+  testing::internal::CaptureStderr();
+  EXPECT_THROW(loadPhoto(corrupt.string()), InputError);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  expectInputError(corrupt.string(), "corrupt");
+}
+
+TEST(SegmentationImageIO, CapturedStderrTakesWhatLibrariesPrint) {
+  testing::internal::CaptureStderr();
+  std::string captured;
+  {
+    detail::CapturedStderr capture;
+    std::fprintf(stderr, "libfoo error: first line\n\n");
+    const char raw[] = "  second line  \n";
+    ASSERT_EQ(::write(STDERR_FILENO, raw, sizeof raw - 1), ssize_t(sizeof raw - 1));
+    captured = capture.finish();
+    std::fprintf(stderr, "after");  // stderr is back
+  }
+  EXPECT_EQ(captured, "libfoo error: first line; second line");
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "after");
+}
+
+TEST(SegmentationImageIO, CapturedStderrNests) {
+  testing::internal::CaptureStderr();
+  std::string outer, inner;
+  {
+    detail::CapturedStderr a;
+    std::fprintf(stderr, "outer\n");
+    {
+      detail::CapturedStderr b;
+      std::fprintf(stderr, "inner\n");
+      inner = b.finish();
+    }
+    std::fprintf(stderr, "outer again\n");
+    outer = a.finish();
+  }
+  EXPECT_EQ(inner, "inner");
+  EXPECT_EQ(outer, "outer; outer again");
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
 TEST(SegmentationImageIO, ReadsTheExemplars) {
