@@ -23,7 +23,8 @@ Bytes readBytes(const fs::path& path) {
 }
 
 void writeBytes(const fs::path& path, const Bytes& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 Bytes damaged(Bytes bytes, std::size_t at, std::size_t count, bool zero) {
@@ -68,7 +69,8 @@ protected:
     const fs::path out = emptyScratch("out-" + std::to_string(getpid()));
     const auto before = filesUnder(inputs_);
     std::string line = arguments;
-    for (const auto& [key, value] : {std::pair{std::string("IN/"), inputs_}, std::pair{std::string("OUT/"), out}})
+    for (const auto& [key, value] :
+         {std::pair{std::string("IN/"), inputs_}, std::pair{std::string("OUT/"), out}})
       for (std::size_t at = line.find(key); at != std::string::npos; at = line.find(key))
         line.replace(at, key.size(), (value / "").string());
     const Outcome outcome = runSolidtex(line);
@@ -86,9 +88,9 @@ protected:
 
 fs::path BadInput::inputs_;
 
-const char* const kBrokenPhotos[] = {"missing.png", "folder.png", "empty.png", "text.png", "truncated.png",
-                                     "idat.png",    "tiny.png",   "huge.png",  "black.png", "white.png",
-                                     "clear.png"};
+const char* const kBrokenPhotos[] = {"missing.png",   "folder.png", "empty.png", "text.png",
+                                     "truncated.png", "idat.png",   "tiny.png",  "huge.png",
+                                     "black.png",     "white.png",  "clear.png"};
 
 TEST_F(BadInput, BrokenPhotosAreRefusedByEveryCommandThatReadsOne) {
   for (const char* photo : kBrokenPhotos) {
@@ -106,9 +108,8 @@ TEST_F(BadInput, BrokenPhotosAreRefusedByEveryCommandThatReadsOne) {
 }
 
 TEST_F(BadInput, BrokenVolumesAreRefused) {
-  for (const char* volume :
-       {"missing.vdb", "empty.vdb", "header.vdb", "truncated.vdb", "xored.vdb", "zeroed.vdb", "metadata.vdb",
-        "foreign.vdb"}) {
+  for (const char* volume : {"missing.vdb", "empty.vdb", "header.vdb", "truncated.vdb", "xored.vdb",
+                             "zeroed.vdb", "metadata.vdb", "foreign.vdb"}) {
     const std::string in = std::string("IN/") + volume;
     expectRefused("compare IN/coins.png " + in + " --report OUT/r.json", 1);
     expectRefused("synthesize " + in + " --size 16 -o OUT/v.vdb", 1);
@@ -143,7 +144,8 @@ TEST_F(BadInput, AbsurdValuesAreRefusedAsCommandLineErrors) {
         std::string("--scale -1"), std::string("--min-area 1e12"), std::string("--size 2048"),
         std::string("--views 9"), std::string("--max-memory lots")})
     expectRefused("particles IN/coins.png -o OUT/v.vdb " + option, 2);
-  for (const std::string& option : {std::string("--scale 0"), std::string("--scale 1e9"), std::string("--scale inf")})
+  for (const std::string& option :
+       {std::string("--scale 0"), std::string("--scale 1e9"), std::string("--scale inf")})
     expectRefused("compare IN/coins.png IN/good.vdb " + option, 2);
 }
 

@@ -106,7 +106,8 @@ TEST(FullDisk, IsAnErrorNeverATruncatedFile) {
 TEST(ConcurrentWriters, OneOutputIsWhollyOneRun) {
   const fs::path dir = emptyScratch("concurrent");
   const auto command = [&](int seed, const fs::path& out) {
-    return "particles " + word(kCoins) + " --size 32 --quiet --seed " + std::to_string(seed) + " -o " + word(out);
+    return "particles " + word(kCoins) + " --size 32 --quiet --seed " + std::to_string(seed) + " -o " +
+           word(out);
   };
   ASSERT_EQ(runSolidtex(command(1, dir / "one.vdb")).exitCode, 0);
   ASSERT_EQ(runSolidtex(command(2, dir / "two.vdb")).exitCode, 0);
@@ -121,4 +122,15 @@ TEST(ConcurrentWriters, OneOutputIsWhollyOneRun) {
     EXPECT_TRUE(result == one || result == two) << "trial " << trial << ": the file is neither run's";
     for (const auto& file : filesUnder(dir)) EXPECT_EQ(file.find(".partial"), std::string::npos) << file;
   }
+}
+
+TEST(StaleTemporaries, OfAKilledRunAreRemovedByTheNext) {
+  const fs::path dir = emptyScratch("stale");
+  // A pid above the kernel's largest (pid_max is at most 2^22) belongs to no running process.
+  const fs::path stale = dir / ".v.vdb.solidtex-99999999.partial";
+  std::ofstream(stale) << "left by a run killed with SIGKILL";
+  ASSERT_EQ(
+      runSolidtex("particles " + word(kCoins) + " --size 16 --quiet -o " + word(dir / "v.vdb")).exitCode, 0);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(dir / "v.vdb"));
 }
