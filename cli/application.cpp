@@ -69,15 +69,16 @@ int runApplication(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     const auto chosen = app.get_subcommands();
-    return fail(std::string(e.what()) + " (see solidtex " + (chosen.empty() ? "" : chosen.front()->get_name() + " ") +
-                    "--help)",
+    return fail(std::string(e.what()) + " (see solidtex " +
+                    (chosen.empty() ? "" : chosen.front()->get_name() + " ") + "--help)",
                 kUsage);
   }
   try {
     return application->actions.at(app.get_subcommands().front()->get_name())();
   } catch (const OptionError& e) {
-    return fail(std::string(e.what()) + " (see solidtex " + app.get_subcommands().front()->get_name() + " --help)",
-                kUsage);
+    return fail(
+        std::string(e.what()) + " (see solidtex " + app.get_subcommands().front()->get_name() + " --help)",
+        kUsage);
   } catch (const std::bad_alloc&) {
     return fail("out of memory (see --max-memory; a smaller size needs less)", kFailed);
   } catch (const std::exception& e) {

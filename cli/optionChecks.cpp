@@ -31,7 +31,8 @@ CLI::Validator between(double low, double high) {
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         const double value = parsed(text);
-        if (std::isnan(value) || value < low || value > high) return "must be " + range + " (got " + text + ")";
+        if (std::isnan(value) || value < low || value > high)
+          return "must be " + range + " (got " + text + ")";
         return {};
       },
       "in [" + number(low) + ", " + number(high) + "]");
@@ -42,7 +43,8 @@ CLI::Validator aboveAtMost(double low, double high) {
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         const double value = parsed(text);
-        if (std::isnan(value) || value <= low || value > high) return "must be " + range + " (got " + text + ")";
+        if (std::isnan(value) || value <= low || value > high)
+          return "must be " + range + " (got " + text + ")";
         return {};
       },
       "in (" + number(low) + ", " + number(high) + "]");

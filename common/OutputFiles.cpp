@@ -51,11 +51,13 @@ void clearSlots() {
 
 std::string canonical(const std::string& path) { return fs::weakly_canonical(fs::absolute(path)).string(); }
 
-fs::path folderOf(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
+fs::path folderOf(const fs::path& path) {
+  return path.has_parent_path() ? path.parent_path() : fs::path(".");
+}
 
 std::string temporaryName(const fs::path& target) {
-  return (folderOf(target) / ("." + target.filename().string() + ".solidtex-" + std::to_string(::getpid()) +
-                              ".partial"))
+  return (folderOf(target) /
+          ("." + target.filename().string() + ".solidtex-" + std::to_string(::getpid()) + ".partial"))
       .string();
 }
 
@@ -65,7 +67,8 @@ void removeStaleTemporaries(const fs::path& target) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folderOf(target), ec)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0 || name.size() < prefix.size() + 9 || !name.ends_with(".partial")) continue;
+    if (name.rfind(prefix, 0) != 0 || name.size() < prefix.size() + 9 || !name.ends_with(".partial"))
+      continue;
     const std::string pid = name.substr(prefix.size(), name.size() - prefix.size() - 8);
     if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) continue;
     if (::kill(pid_t(std::stol(pid)), 0) != 0 && errno == ESRCH) fs::remove(entry.path(), ec);
@@ -171,7 +174,8 @@ void OutputFiles::addFolder(const std::string& option, const std::string& path) 
     throw InputError(option + " " + path + " is a file, not a folder");
   checkNotClaimed(option, path);
   std::vector<fs::path> missing;
-  for (fs::path p = fs::absolute(path).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+  for (fs::path p = fs::absolute(path).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+       p = p.parent_path()) {
     missing.push_back(p);
     if (p == p.parent_path()) break;
   }
@@ -182,7 +186,8 @@ void OutputFiles::addFolder(const std::string& option, const std::string& path) 
     createdFolders_.push_back(it->string());
   }
   // A file made and removed now proves the folder takes new files before any work is done.
-  const std::string probe = (fs::path(path) / (".solidtex-" + std::to_string(::getpid()) + ".probe")).string();
+  const std::string probe =
+      (fs::path(path) / (".solidtex-" + std::to_string(::getpid()) + ".probe")).string();
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw InputError("cannot write into folder " + path + ": " + std::strerror(errno));
   ::close(fd);

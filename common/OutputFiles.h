@@ -23,7 +23,8 @@ public:
   /// An input of the command: no output may replace it.
   void addInput(const std::string& path);
   /// A file output given by `option` (named in messages), ending in one of `extensions`.
-  void addFile(const std::string& option, const std::string& path, const std::vector<std::string>& extensions);
+  void addFile(const std::string& option, const std::string& path,
+               const std::vector<std::string>& extensions);
   /// A folder output (created now if missing): files written into it are staged one by one.
   void addFolder(const std::string& option, const std::string& path);
 

@@ -153,8 +153,9 @@ std::string formatBytes(double bytes) {
 void requireMemory(const std::string& what, double bytes) {
   const std::uint64_t available = availableMemoryBytes();
   if (bytes > double(available))
-    throw InputError(what + " needs about " + formatBytes(bytes) + " of memory, " + formatBytes(double(available)) +
-                     " available" + (userLimit.load() > 0 ? " under --max-memory" : ""));
+    throw InputError(what + " needs about " + formatBytes(bytes) + " of memory, " +
+                     formatBytes(double(available)) + " available" +
+                     (userLimit.load() > 0 ? " under --max-memory" : ""));
 }
 
 }  // namespace solidtex

@@ -35,7 +35,12 @@ inline Bytes flatPng(int width, int height, const Bytes& pixel, int claimedWidth
     for (int x = 0; x < width; ++x) raw.insert(raw.end(), pixel.begin(), pixel.end());
   }
   const auto n = std::uint16_t(raw.size());
-  Bytes zlib = {0x78, 0x01, 0x01, (unsigned char)n, (unsigned char)(n >> 8), (unsigned char)~n,
+  Bytes zlib = {0x78,
+                0x01,
+                0x01,
+                (unsigned char)n,
+                (unsigned char)(n >> 8),
+                (unsigned char)~n,
                 (unsigned char)(std::uint16_t(~n) >> 8)};
   zlib.insert(zlib.end(), raw.begin(), raw.end());
   std::uint32_t a = 1, b = 0;

@@ -14,7 +14,9 @@ namespace {
 // file's metadata (count, then name, type, byte count and value each); the grid count, then per
 // grid its name, type and instance parent, and the offsets of its data, the next descriptor
 // starting at the grid's end.
-constexpr std::uint32_t kFirstVersionWithUuid = 220;
+// Format 222 (OpenVDB 3.0, 2014) gave each grid its compression flags; older files are refused
+// rather than left unchecked to OpenVDB.
+constexpr std::uint32_t kOldestVersion = 222;
 constexpr std::uint32_t kFirstVersionWithInstancing = 223;
 constexpr std::int32_t kMostGrids = 1 << 16;
 
@@ -47,6 +49,14 @@ public:
 
   void skipString(const char* what) { skip(value<std::uint32_t>(what), what); }
 
+  // A metadata map: its count, then name, type and a byte count with the value, each.
+  void skipMetadata(const char* what) {
+    const auto count = value<std::int32_t>(what);
+    if (count < 0) fail(std::string("damaged ") + what);
+    for (std::int32_t i = 0; i < count; ++i)
+      for (int field = 0; field < 3; ++field) skipString(what);
+  }
+
   void seek(std::int64_t position, const char* what) {
     if (position < 0 || std::uint64_t(position) > size_) fail(std::string("damaged ") + what);
     in_.seekg(position);
@@ -66,17 +76,13 @@ void checkVdbLayout(const std::string& path) {
   Reader file(path);
   if (file.value<std::int64_t>("header") != 0x56444220) file.fail("no OpenVDB header");
   const auto version = file.value<std::uint32_t>("header");
-  if (version < kFirstVersionWithUuid) return;  // older layouts: left to OpenVDB
+  if (version < kOldestVersion)
+    file.fail("file format " + std::to_string(version) +
+              " is older than OpenVDB 3.0's; save it again with a newer OpenVDB");
   file.skip(8, "header");  // library version
   const bool hasOffsets = file.value<char>("header") != 0;
   file.skip(36, "header");  // UUID
-  const auto metadata = file.value<std::int32_t>("metadata");
-  if (metadata < 0) file.fail("damaged metadata count");
-  for (std::int32_t i = 0; i < metadata; ++i) {
-    file.skipString("metadata");
-    file.skipString("metadata");
-    file.skipString("metadata");
-  }
+  file.skipMetadata("metadata");
   if (!hasOffsets) return;  // a streamed file: its grids follow one another without offsets
   const auto grids = file.value<std::int32_t>("grid count");
   if (grids < 0 || grids > kMostGrids) file.fail("damaged grid count");
@@ -90,6 +96,9 @@ void checkVdbLayout(const std::string& path) {
     if (start < 0 || end < start || std::uint64_t(end) > file.size())
       file.fail("grid " + std::to_string(g + 1) + " of " + std::to_string(grids) +
                 " runs past the end of the file");
+    file.seek(start, "grid offsets");
+    file.skip(4, "grid");  // compression flags
+    file.skipMetadata("grid metadata");
     file.seek(end, "grid offsets");
   }
 }
