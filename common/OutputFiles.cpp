@@ -27,6 +27,9 @@ std::atomic<bool> slotIsFolder[kSlots];
 std::atomic<int> slotCount{0};
 std::atomic<bool> committing{false};
 std::atomic<bool> interruptOnTerminal{false};
+// The real stderr, kept apart from fd 2, which may be pointed elsewhere for a while to capture a
+// library's own messages (CapturedStderr): the interrupt's line must still reach the user.
+std::atomic<int> interruptStderr{STDERR_FILENO};
 OutputFiles* current = nullptr;
 
 void registerSlot(const std::string& path, bool folder) {
@@ -114,10 +117,11 @@ extern "C" void onInterrupt(int signal) {
     if (slotLive[i] && !slotIsFolder[i]) ::unlink(slotPath[i]);
   for (int i = count - 1; i >= 0; --i)
     if (slotLive[i] && slotIsFolder[i]) ::rmdir(slotPath[i]);
-  if (interruptOnTerminal.load()) writeAll(STDERR_FILENO, "\r\033[K");
-  writeAll(STDERR_FILENO, signal == SIGINT    ? "solidtex: error: interrupted (SIGINT), no output written\n"
-                          : signal == SIGTERM ? "solidtex: error: terminated (SIGTERM), no output written\n"
-                                              : "solidtex: error: hung up (SIGHUP), no output written\n");
+  const int err = interruptStderr.load();
+  if (interruptOnTerminal.load()) writeAll(err, "\r\033[K");
+  writeAll(err, signal == SIGINT    ? "solidtex: error: interrupted (SIGINT), no output written\n"
+                : signal == SIGTERM ? "solidtex: error: terminated (SIGTERM), no output written\n"
+                                    : "solidtex: error: hung up (SIGHUP), no output written\n");
   ::_exit(128 + signal);
 }
 
@@ -258,6 +262,7 @@ void OutputFiles::commit() {
 
 void installInterruptHandlers() {
   interruptOnTerminal = ::isatty(STDERR_FILENO) != 0;
+  if (const int err = ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3); err >= 0) interruptStderr = err;
   struct sigaction action {};
   action.sa_handler = onInterrupt;
   sigemptyset(&action.sa_mask);

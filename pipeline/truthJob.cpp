@@ -36,7 +36,7 @@ nlohmann::json optionsJson(const ParticleTruthOptions& options) {
 
 }  // namespace
 
-// Peak resident memory per voxel: the ids, the colour and the .vdb's trees built from them.
+// Peak resident memory per voxel: 30 measured (367 MiB at 256x256x128, less the 130 MiB every run holds).
 constexpr double kTruthBytesPerVoxel = 32;
 
 nlohmann::json runTruth(const TruthJob& job) {
