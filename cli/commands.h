@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "segmentation/analyzeExemplar.h"
+#include "voxel/writeVolumeExports.h"
 
 namespace solidtex::cli {
 
@@ -23,6 +24,9 @@ Action addTruthCommand(CLI::App& app);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
+
+/// --tiff, --npy, --vti: shared by every command that writes a volume.
+void addExportOptions(CLI::App& command, VolumeExports& exports);
 
 /// --levels, --wavelet-levels, --neighborhoods, --distance: shared by synthesize and synthesize2d.
 void addPyramidOptions(CLI::App& command, int& levels, int& waveletLevels, std::vector<int>& neighborhoods,

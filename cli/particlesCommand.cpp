@@ -67,6 +67,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview,
                       "Folder for preview PNGs (middle and oblique slices beside the photo)");
+  addExportOptions(*command, job->exports);
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
   return [job, size, dims, placer, sizing, arrangement, boundary, smoothing, threads] {

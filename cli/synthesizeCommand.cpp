@@ -125,6 +125,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write a JSON report");
   command->add_option("--preview", job->preview, "Folder for preview PNGs");
+  addExportOptions(*command, job->exports);
   command->add_flag("!--quiet", job->progress, "No progress line");
   command->add_flag("!--no-quality", job->measure,
                     "Do not measure the result against the exemplar (the report's quality)");
@@ -147,6 +148,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
       v.synthesis.threads = o.threads;
       v.report = job->report;
       v.preview = job->preview;
+      v.exports = job->exports;
       v.progress = job->progress;
       v.measure = job->measure;
       runSynthesizeVolume(v);

@@ -139,6 +139,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   outputs.addInput(job.photo);
   if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
   addVolumeOutputs(outputs, job.output, job.report, job.preview);
+  addVolumeExports(outputs, job.exports);
   PhaseTimer timer;
   ProgressLine progress(job.progress);
 
@@ -200,6 +201,9 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   timer.start("write");
   nlohmann::json written = {{"vdb", job.output}};
   if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, volume);
+  // A voxel is 1 / scale of the photo's pixels, whose size in µm a user may know.
+  const auto exported = writeVolumeExports(outputs, job.exports, volume, {1 / scale, "pixel"});
+  if (!exported.empty()) written["exports"] = exported;
   outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(volume)); });
 
   nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},

@@ -11,6 +11,7 @@
 #include "placement/placeLargestFirst.h"
 #include "placement/sectionSizing.h"
 #include "segmentation/analyzeExemplar.h"
+#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 
@@ -41,6 +42,7 @@ struct ParticleSolidJob {
   std::uint64_t seed = 1;
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
+  VolumeExports exports;               ///< TIFF stacks, numpy arrays, .vti
   std::string commandLine;             ///< stored in the .vdb's metadata
   bool progress = true;
 };

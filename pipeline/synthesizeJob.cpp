@@ -85,6 +85,7 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   outputs.addInput(job.exemplar);
   if (job.control) outputs.addInput(*job.control);
   addVolumeOutputs(outputs, job.output, job.report, job.preview);
+  addVolumeExports(outputs, job.exports);
 
   const cv::Mat exemplar = loadPhoto(job.exemplar);
   SynthesisOptions options = job.synthesis;
@@ -112,6 +113,8 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   report["outputs"] = {{"vdb", job.output}};
   if (job.preview)
     report["outputs"]["previews"] = writePreviews(outputs, *job.preview, exemplar, result.volume);
+  const auto exported = writeVolumeExports(outputs, job.exports, result.volume, {1, "pixel"});
+  if (!exported.empty()) report["outputs"]["exports"] = exported;
   outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(result.volume)); });
   report["peak_memory_mib"] = peakMemoryMiB();
   writeReport(outputs, job.report, report);

@@ -6,6 +6,7 @@
 
 #include "synthesis/synthesizeSolid.h"
 #include "validation/continuousQuality.h"
+#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 
@@ -17,6 +18,7 @@ struct SynthesizeJob {
   std::optional<std::string> control;  ///< greyscale PNG the exemplar's size
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
+  VolumeExports exports;               ///< TIFF stacks, numpy arrays, .vti
   std::string commandLine;
   bool progress = true;              ///< a progress line on stderr
   bool measure = true;               ///< the report's `quality`

@@ -156,6 +156,7 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   outputs.addInput(job.exemplar);
   if (job.field) outputs.addInput(*job.field);
   addVolumeOutputs(outputs, job.output, job.report, job.preview);
+  addVolumeExports(outputs, job.exports);
 
   const ThreadLimit threads(job.synthesis.threads);
   const DenseVolume exemplar = readVolumeExemplar(job.exemplar);
@@ -207,6 +208,8 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
     view.color = solid.color.empty() ? displayColors(DenseVolume{solid.dims, 1, solid.density}) : solid.color;
     report["outputs"]["previews"] = writePreviews(outputs, *job.preview, middleSlice(exemplar), view);
   }
+  const auto exported = writeVolumeExports(outputs, job.exports, solid, {1, "voxel"});
+  if (!exported.empty()) report["outputs"]["exports"] = exported;
   outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(solid)); });
   report["peak_memory_mib"] = peakMemoryMiB();
   writeReport(outputs, job.report, report);

@@ -6,6 +6,7 @@
 
 #include "synthesis/synthesizeFromVolume.h"
 #include "validation/volumeQuality.h"
+#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 
@@ -17,6 +18,7 @@ struct SynthesizeVolumeJob {
   std::optional<std::string> field;  ///< a built-in field's name or a .vdb with axis_x, axis_y, axis_z
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
+  VolumeExports exports;               ///< TIFF stacks, numpy arrays, .vti
   std::string commandLine;
   bool progress = true;  ///< a progress line on stderr
   bool measure = true;   ///< the report's `quality`

@@ -16,6 +16,7 @@
 #include "common/memoryBudget.h"
 #include "common/writeFileBytes.h"
 #include "segmentation/detail/CapturedStderr.h"
+#include "segmentation/detail/checkImageLayout.h"
 #include "segmentation/detail/color.h"
 
 namespace solidtex {
@@ -49,34 +50,12 @@ std::string withPrinted(const std::string& message, const std::string& printed) 
   throw InputError(path + ": " + problem);
 }
 
-// libpng allocates what a chunk's length claims before it finds the file too short for it (a
-// 691-byte file whose text chunk claims 1.29 GB): a PNG's chunks must lie within the file.
-void checkPngChunks(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char signature[8] = {};
-  const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (!in.read(reinterpret_cast<char*>(signature), 8) || !std::equal(signature, signature + 8, png)) return;
-  std::error_code ec;
-  const std::uint64_t size = std::filesystem::file_size(path, ec);
-  for (std::uint64_t at = 8; at + 12 <= size && !ec;) {
-    unsigned char header[8] = {};
-    if (!in.read(reinterpret_cast<char*>(header), 8)) return;
-    const std::uint64_t length =
-        (std::uint64_t(header[0]) << 24) | (header[1] << 16) | (header[2] << 8) | header[3];
-    if (at + 12 + length > size)
-      fail(path,
-           "cannot decode the image, it is truncated or corrupt (a PNG chunk runs past the end of the file)");
-    if (std::equal(header + 4, header + 8, "IEND")) return;
-    at += 12 + length;
-    in.seekg(std::streamoff(at));
-  }
-}
-
 std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) fail(path, "file not found");
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not an image");
-  checkPngChunks(path);
+  if (const std::string problem = detail::imageLayoutProblem(path); !problem.empty())
+    fail(path, "cannot decode the image, it is truncated or corrupt (" + problem + ")");
   // Colour, not colour times coverage: keep RGBA files' colour as stored.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);

@@ -124,7 +124,10 @@ TEST_F(BadInput, UnwritableOutputsAreRefusedBeforeAnyWork) {
         std::string("-o OUT/v.vdb --report OUT/missing/r.json"), std::string("-o OUT/v.vdb --report OUT/"),
         std::string("-o OUT/v.vdb --report OUT/v.vdb"), std::string("-o OUT/v.vdb --report OUT/r.txt"),
         std::string("-o OUT/v.vdb --preview IN/coins.png"), std::string("-o OUT/v.vdb --preview /proc/p"),
-        std::string("-o IN/good.vdb --mask IN/good.vdb")})
+        std::string("-o IN/good.vdb --mask IN/good.vdb"), std::string("-o OUT/v.vdb --tiff /proc/t"),
+        std::string("-o OUT/v.vdb --tiff IN/coins.png"), std::string("-o OUT/v.vdb --npy OUT/v.vdb"),
+        std::string("-o OUT/v.vdb --vti OUT/v.vtk"), std::string("-o OUT/v.vdb --vti /proc/v.vti"),
+        std::string("-o OUT/v.vdb --vti OUT/v.vdb")})
     expectRefused("particles IN/coins.png --size 16 " + output, 1);
   expectRefused("analyze IN/coins.png --labels IN/coins.png", 1);
   expectRefused("analyze IN/coins.png --labels OUT/l.jpg", 1);
@@ -132,6 +135,8 @@ TEST_F(BadInput, UnwritableOutputsAreRefusedBeforeAnyWork) {
   expectRefused("compare IN/coins.png IN/good.vdb --plot /proc/p.png", 1);
   expectRefused("compare IN/coins.png IN/good.vdb --report IN/good.vdb", 1);
   expectRefused("synthesize IN/coins.png --size 16 -o /proc/v.vdb", 1);
+  expectRefused("synthesize IN/coins.png --size 16 -o OUT/v.vdb --npy /proc/n", 1);
+  expectRefused("synthesize IN/good.vdb --size 16 -o OUT/v.vdb --tiff IN/good.vdb", 1);
   expectRefused("synthesize2d IN/coins.png --size 16 16 -o /proc/t.png", 1);
   expectRefused("spaciousness IN/coins.png --size 16 --plot /proc/p.png", 1);
   expectRefused("truth --dims 16 16 16 -o /proc/t", 1);
