@@ -49,6 +49,14 @@ public:
 
   void skipString(const char* what) { skip(value<std::uint32_t>(what), what); }
 
+  std::string string(const char* what) {
+    const auto length = value<std::uint32_t>(what);
+    if (length > 1024) fail(std::string("damaged ") + what);
+    std::string text(length, '\0');
+    if (length > remaining() || !in_.read(text.data(), length)) fail(std::string("truncated in its ") + what);
+    return text;
+  }
+
   // A metadata map: its count, then name, type and a byte count with the value, each.
   void skipMetadata(const char* what) {
     const auto count = value<std::int32_t>(what);
@@ -70,9 +78,43 @@ private:
   std::uint64_t size_ = 0;
 };
 
+// Bytes a map of this type reads after its name (math/Maps.h); 0 for one whose size is not fixed.
+std::uint64_t mapBytes(const std::string& type) {
+  if (type == "AffineMap" || type == "UnitaryMap") return 16 * 8;      // a Mat4d
+  if (type == "ScaleMap" || type == "UniformScaleMap") return 5 * 24;  // five Vec3d
+  if (type == "ScaleTranslateMap" || type == "UniformScaleTranslateMap") return 6 * 24;
+  if (type == "TranslationMap") return 24;
+  return 0;
+}
+
+// Bytes of one value of a tree type ("Tree_float_5_4_3"); 0 for a type not listed.
+std::uint64_t valueBytes(const std::string& treeType) {
+  const std::pair<const char*, std::uint64_t> sizes[] = {
+      {"Tree_float_", 4}, {"Tree_int32_", 4},  {"Tree_vec3s_", 12}, {"Tree_double_", 8},
+      {"Tree_int64_", 8}, {"Tree_vec3d_", 24}, {"Tree_vec3i_", 12}, {"Tree_bool_", 1}};
+  for (const auto& [prefix, bytes] : sizes)
+    if (treeType.rfind(prefix, 0) == 0) return bytes;
+  return 0;
+}
+
+// The root node's tiles, each (origin, value, active flag): OpenVDB reads the flag's byte into a
+// bool, which must then be 0 or 1.
+long checkRootTiles(Reader& file, std::uint64_t valueSize, const std::string& grid) {
+  file.skip(4 + valueSize, "tree");  // buffer count, background
+  const auto tiles = file.value<std::uint32_t>("tree");
+  file.value<std::uint32_t>("tree");  // children
+  const std::uint64_t tileBytes = 12 + valueSize + 1;
+  if (tiles > file.remaining() / tileBytes) file.fail(grid + " has more tiles than bytes");
+  for (std::uint32_t t = 0; t < tiles; ++t) {
+    file.skip(12 + valueSize, "tree");
+    if (file.value<std::uint8_t>("tree") > 1) file.fail(grid + " has a damaged tile");
+  }
+  return long(tiles);
+}
+
 }  // namespace
 
-void checkVdbLayout(const std::string& path) {
+std::vector<long> checkVdbLayout(const std::string& path) {
   Reader file(path);
   if (file.value<std::int64_t>("header") != 0x56444220) file.fail("no OpenVDB header");
   const auto version = file.value<std::uint32_t>("header");
@@ -83,24 +125,36 @@ void checkVdbLayout(const std::string& path) {
   const bool hasOffsets = file.value<char>("header") != 0;
   file.skip(36, "header");  // UUID
   file.skipMetadata("metadata");
-  if (!hasOffsets) return;  // a streamed file: its grids follow one another without offsets
+  std::vector<long> rootTiles;
+  if (!hasOffsets) return rootTiles;  // a streamed file: its grids follow one another without offsets
   const auto grids = file.value<std::int32_t>("grid count");
   if (grids < 0 || grids > kMostGrids) file.fail("damaged grid count");
   for (std::int32_t g = 0; g < grids; ++g) {
     file.skipString("grid descriptor");
-    file.skipString("grid descriptor");
-    if (version >= kFirstVersionWithInstancing) file.skipString("grid descriptor");
+    const std::string treeType = file.string("grid descriptor");
+    const bool instance = version >= kFirstVersionWithInstancing && !file.string("grid descriptor").empty();
     const auto start = file.value<std::int64_t>("grid descriptor");
     file.value<std::int64_t>("grid descriptor");  // the data block's offset, 0 for an instance
     const auto end = file.value<std::int64_t>("grid descriptor");
+    const std::string grid = "grid " + std::to_string(g + 1) + " of " + std::to_string(grids);
     if (start < 0 || end < start || std::uint64_t(end) > file.size())
-      file.fail("grid " + std::to_string(g + 1) + " of " + std::to_string(grids) +
-                " runs past the end of the file");
+      file.fail(grid + " runs past the end of the file");
     file.seek(start, "grid offsets");
     file.skip(4, "grid");  // compression flags
     file.skipMetadata("grid metadata");
+    // From format 223 the transform follows, its map's type name first (OpenVDB allocates what
+    // the name's length claims).
+    rootTiles.push_back(-1);
+    if (version >= kFirstVersionWithInstancing) {
+      const std::uint64_t transform = mapBytes(file.string("grid transform"));
+      if (transform > 0 && !instance && valueBytes(treeType) > 0) {
+        file.skip(transform, "grid transform");
+        rootTiles.back() = checkRootTiles(file, valueBytes(treeType), grid);
+      }
+    }
     file.seek(end, "grid offsets");
   }
+  return rootTiles;
 }
 
 }  // namespace solidtex

@@ -18,6 +18,7 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
+#include "segmentation/detail/CapturedStderr.h"
 #include "voxel/checkVdbLayout.h"
 #include "voxel/readVdbGrids.h"
 #include "voxel/writeVdbGrids.h"
@@ -278,6 +279,9 @@ VdbContents readVdbGrids(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError("cannot read " + path + ": it is a folder");
   checkVdbLayout(path);
   VdbContents contents;
+  // OpenVDB prints warnings on damaged files ("multi-buffer trees are no longer supported"): the
+  // command's error, if any, is the one line.
+  detail::CapturedStderr libraryOutput;
   try {
     const MemoryCap cap(readingAllowance(path));
     openvdb::io::File file(path);

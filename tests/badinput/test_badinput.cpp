@@ -61,6 +61,11 @@ protected:
     writeBytes(inputs_ / "metadata.vdb", damaged(vdb, 150, 300, true));
     writeBytes(inputs_ / "empty.vdb", {});
     writeBytes(inputs_ / "foreign.vdb", png);
+    // Fuzz findings: a value chunk longer than its node (a heap overflow inside OpenVDB 10.0), a
+    // tree that makes OpenVDB print a warning of its own.
+    const fs::path corpus = fs::path(SOLIDTEX_DATA_DIR) / "../tests/fuzz/corpus/vdb";
+    fs::copy_file(corpus / "260948a0269240db913d6b232da60d8347309a15", inputs_ / "chunk.vdb");
+    fs::copy_file(corpus / "8e6a0dd8b4de22509717e15714e9283a5d28c535", inputs_ / "warning.vdb");
   }
 
   /// Runs `arguments` (with IN standing for the inputs folder and OUT for an empty output folder):
@@ -109,7 +114,7 @@ TEST_F(BadInput, BrokenPhotosAreRefusedByEveryCommandThatReadsOne) {
 
 TEST_F(BadInput, BrokenVolumesAreRefused) {
   for (const char* volume : {"missing.vdb", "empty.vdb", "header.vdb", "truncated.vdb", "xored.vdb",
-                             "zeroed.vdb", "metadata.vdb", "foreign.vdb"}) {
+                             "zeroed.vdb", "metadata.vdb", "foreign.vdb", "chunk.vdb", "warning.vdb"}) {
     const std::string in = std::string("IN/") + volume;
     expectRefused("compare IN/coins.png " + in + " --report OUT/r.json", 1);
     expectRefused("synthesize " + in + " --size 16 -o OUT/v.vdb", 1);

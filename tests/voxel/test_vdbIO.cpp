@@ -6,6 +6,8 @@
 #include <openvdb/openvdb.h>
 
 #include "common/Error.h"
+#include "voxel/checkVdbLayout.h"
+#include "voxel/readVdbGrids.h"
 #include "voxel/vdbIO.h"
 
 namespace solidtex {
@@ -121,6 +123,37 @@ TEST(VdbIO, ReadingAMissingOrCorruptFileThrows) {
   { std::ofstream(path) << "not a vdb"; }
   EXPECT_THROW(readVdb(path.string()), InputError);
   fs::remove(path);
+}
+
+// checkVdbLayout walks each grid up to its root node's tiles, past a transform of each fixed-size
+// map type: files with tiles and each such map must pass it and read back.
+TEST(VdbLayout, RootTilesBehindEveryFixedSizeMapPass) {
+  using openvdb::math::Transform;
+  openvdb::initialize();
+  openvdb::Mat4R sheared = openvdb::Mat4R::identity();
+  sheared(0, 1) = 0.5;
+  const std::vector<Transform::Ptr> transforms = {
+      Transform::createLinearTransform(0.5), Transform::createLinearTransform(sheared),
+      std::make_shared<Transform>(std::make_shared<openvdb::math::TranslationMap>(openvdb::Vec3d(1, 2, 3))),
+      std::make_shared<Transform>(std::make_shared<openvdb::math::ScaleMap>(openvdb::Vec3d(1, 2, 3))),
+      std::make_shared<Transform>(std::make_shared<openvdb::math::ScaleTranslateMap>(
+          openvdb::Vec3d(1, 2, 3), openvdb::Vec3d(4, 5, 6)))};
+  for (const auto& transform : transforms) {
+    auto density = openvdb::FloatGrid::create(0.f);
+    density->setName("density");
+    density->setTransform(transform);
+    density->tree().addTile(3, openvdb::Coord(0), 1.f, true);             // a root tile, active
+    density->tree().addTile(3, openvdb::Coord(-4096, 0, 0), 2.f, false);  // and an inactive one
+    density->tree().setValue(openvdb::Coord(9000, 1, 1), 3.f);
+    auto ids = openvdb::Int32Grid::create(0);
+    ids->setName("particle_id");
+    ids->tree().addTile(3, openvdb::Coord(0, 4096, 0), 7, true);
+    const auto path = tempPath("tiles.vdb");
+    openvdb::io::File(path.string()).write({density, ids});
+    EXPECT_EQ(checkVdbLayout(path.string()), (std::vector<long>{2, 1})) << transform->mapType();
+    EXPECT_EQ(readVdbGrids(path.string()).grids.size(), 2u) << transform->mapType();
+    fs::remove(path);
+  }
 }
 
 }  // namespace

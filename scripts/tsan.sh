@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the threaded parts (particle placement with its look-ahead and field updates, the
+# particle factory, synthesis) with ThreadSanitizer and runs their tests (CI runs this after
+# scripts/sanitize.sh). Debian's libtbb is not instrumented, so the sanitizer cannot see the
+# synchronisation between a task's spawn and its run and reports every parallel loop: TBB is
+# built here from Debian's own source of the installed version, with -fsanitize=thread.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+tbb=$PWD/build-tsan/tbb
+if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
+  rm -rf "$tbb" && mkdir -p "$tbb/lists/partial"
+  # Debian's source archive through a private list, leaving the system's apt sources untouched.
+  printf 'deb-src http://deb.debian.org/debian bookworm main\ndeb-src http://deb.debian.org/debian-security bookworm-security main\n' >"$tbb/sources.list"
+  apt_src=(-qq -o Dir::Etc::SourceList="$tbb/sources.list" -o Dir::Etc::SourceParts=/dev/null
+    -o Dir::State::Lists="$tbb/lists" -o APT::Sandbox::User=root)
+  apt-get "${apt_src[@]}" update
+  version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
+  (cd "$tbb" && apt-get "${apt_src[@]}" source --download-only "onetbb=$version")
+  tar -C "$tbb" -xf "$tbb"/onetbb_*.orig.tar.*
+  cmake -S "$(ls -d "$tbb"/oneTBB-*/)" -B "$tbb/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTBB_TEST=OFF \
+    -DTBB_SANITIZE=thread -DTBBMALLOC_BUILD=OFF -DTBB_STRICT=OFF -DCMAKE_INSTALL_PREFIX="$tbb/install" >/dev/null
+  cmake --build "$tbb/build" -j"$(nproc)"
+  cmake --install "$tbb/build" >/dev/null
+fi
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
+  -DSOLIDTEX_TESTS=ON -DSOLIDTEX_STRICT=OFF -DSOLIDTEX_SANITIZE=thread
+tests=(placement/test_placement synthesis/test_synthesis)
+cmake --build build-tsan -j"$(nproc)" --target "${tests[@]##*/}"
+# The instrumented TBB replaces Debian's (same version, same soname) for these runs only.
+export LD_LIBRARY_PATH=$tbb/install/lib TSAN_OPTIONS="suppressions=$PWD/scripts/tsan.supp"
+for test in "${tests[@]}"; do build-tsan/tests/$test --gtest_brief=1; done
