@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
     else if (a == "--exhaustive-budget")
       base.exhaustiveBudget = std::stod(next());
     else if (a == "--verbose")
-      base.progress = [](const std::string& l) { std::cerr << l << "\n"; };
+      base.progress = [](const std::string& l, double) { std::cerr << l << "\n"; };
     else
       exemplars.push_back(a);
   }

@@ -56,18 +56,27 @@ private:
   Clock::time_point begin_ = Clock::now(), phaseBegin_ = begin_;
 };
 
-/// A progress line on stderr that rewrites itself on a terminal and prints sparse lines otherwise.
+/// A progress line on stderr. On a terminal it rewrites itself: the step, a bar, the share done and
+/// an estimate of the time left; in a log it prints a plain line every ten seconds at most.
 class ProgressLine {
 public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
-  void update(const std::string& text);
+  /// `fraction`: the share of the work done in [0, 1], negative when unknown (no bar).
+  void update(const std::string& step, double fraction = -1);
+  /// Ends the line; the next update starts a new estimate.
   void done();
 
 private:
+  using Clock = std::chrono::steady_clock;
   bool enabled_;
   bool dirty_ = false;
   bool started_ = false;
-  std::chrono::steady_clock::time_point last_{};
+  Clock::time_point last_{};
+  std::optional<Clock::time_point> firstFraction_;  ///< when the current estimate began
 };
+
+/// The terminal's progress line: "STEP [########------------] 42% 1m 23s left"; no bar for a
+/// negative fraction, no estimate for a negative `secondsLeft`.
+std::string progressText(const std::string& step, double fraction, double secondsLeft);
 
 }  // namespace solidtex

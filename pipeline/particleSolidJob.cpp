@@ -179,7 +179,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
                   fraction, stats.areaFraction);
-    progress.update(line);
+    progress.update(line, stats.areaFraction > 0 ? fraction / stats.areaFraction : -1);
   };
   PlacementResult placement = placeLargestFirst(stats, factory, *field, placementOptions);
   if (margin > 0) placement = cropPlacement(placement, {margin, margin, margin}, job.dims);

@@ -92,7 +92,8 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   options.exemplarName = fs::path(job.exemplar).filename().string();
   if (job.control) options.control = loadPhoto(*job.control);
   ProgressLine progress(job.progress);
-  if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
+  if (job.progress)
+    options.progress = [&](const std::string& step, double fraction) { progress.update(step, fraction); };
   SynthesisResult result = synthesizeSolid(exemplar, options);
   progress.done();
 

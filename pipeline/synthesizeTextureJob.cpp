@@ -41,7 +41,8 @@ nlohmann::json runSynthesizeTexture(const SynthesizeTextureJob& job) {
   const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
   ProgressLine progress(job.progress);
   TextureSynthesisOptions options = job.synthesis;
-  if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
+  if (job.progress)
+    options.progress = [&](const std::string& step, double fraction) { progress.update(step, fraction); };
   const TextureSynthesisResult result = synthesizeTexture(exemplar, options);
   const TextureSynthesisOptions& o = job.synthesis;
   nlohmann::json report = {

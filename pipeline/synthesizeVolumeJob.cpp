@@ -164,7 +164,8 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   VolumeSynthesisOptions options = job.synthesis;
   options.field = field ? &*field : nullptr;
   ProgressLine progress(job.progress);
-  if (job.progress) options.progress = [&](const std::string& line) { progress.update(line); };
+  if (job.progress)
+    options.progress = [&](const std::string& step, double fraction) { progress.update(step, fraction); };
   VolumeSynthesisResult result = synthesizeFromVolume(exemplar, options);
   progress.done();
 

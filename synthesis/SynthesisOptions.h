@@ -7,6 +7,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "common/Progress.h"
+
 namespace solidtex {
 
 /// Which continuous solid synthesis method runs.
@@ -73,7 +75,7 @@ struct SynthesisOptions {
   std::uint64_t seed = 1;
   int threads = 0;           ///< worker threads; 0 = all cores. Output does not depend on it.
   std::string exemplarName;  ///< stored in the volume's metadata
-  std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
+  Progress progress;         ///< after every level and iteration, when set
 
   // Finer controls (rarely changed).
   int sparseStep = 2;       ///< slice neighbourhoods are matched on every step-th voxel in-plane

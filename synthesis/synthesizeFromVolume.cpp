@@ -413,7 +413,9 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
     result.statistics.levels.push_back(stats);
     if (o.progress)
       o.progress("level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) + " (spacing " +
-                 std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")");
+                     std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")",
+                 pyramidFraction(int(plan.size()), int(l), 0, 1,
+                                 [&](int j) { return plan[std::size_t(j)].window.dims().count(); }));
   }
   copyOut(*grid, domain, exemplar, result);
   result.statistics.seconds = secondsSince(start);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/DenseVolume.h"
+#include "common/Progress.h"
 #include "synthesis/FrameField.h"
 
 namespace solidtex {
@@ -32,8 +33,8 @@ struct VolumeSynthesisOptions {
   int corrections = 4;  ///< correction passes per level, each in 8 subpasses (2x2x2 parity classes)
   const FrameField* field = nullptr;  ///< anisometric control over `dims`; null = isometric
   std::uint64_t seed = 1;
-  int threads = 0;  ///< worker threads; 0 = all cores. Output does not depend on it.
-  std::function<void(const std::string&)> progress;  ///< one line per level, when set
+  int threads = 0;    ///< worker threads; 0 = all cores. Output does not depend on it.
+  Progress progress;  ///< after every level, when set
 };
 
 /// One pyramid level, coarsest first.

@@ -1,5 +1,6 @@
 #include "synthesis/synthesizeSolid.h"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -268,7 +269,8 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
       std::ostringstream line;
       line << methodName(o.method) << " level " << l + 1 << "/" << o.levels << " (" << N << "^3) iteration "
            << it + 1 << "/" << o.iterations << " energy " << step.energy;
-      o.progress(line.str());
+      const auto voxels = [&](int level) { return std::pow(double(o.size >> (o.levels - 1 - level)), 3); };
+      o.progress(line.str(), pyramidFraction(o.levels, l, it, o.iterations, voxels));
     }
   }
   stats.seconds = secondsSince(levelStart);
@@ -348,7 +350,8 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   if (o.method != Method::Kopf) stats.indexCoverage = indexCoverage(state);
   if (haar) {
     const auto rebuildStart = Clock::now();
-    if (o.progress) o.progress("skeletal: rebuilding " + std::to_string(o.size) + "^3 from the Haar details");
+    if (o.progress)
+      o.progress("skeletal: rebuilding " + std::to_string(o.size) + "^3 from the Haar details", -1);
     state.volume = rebuildSkeletalSolid(state.volume, *haar);
     stats.rebuildSeconds = secondsSince(rebuildStart);
   }

@@ -245,7 +245,10 @@ TextureLevelStatistics optimizeLevel(int l, int levels, const ExemplarPyramid& p
       line << textureMethodName(o.method) << " level " << l + 1 << "/" << levels << " (" << stats.width << "x"
            << stats.height << ") iteration " << it + 1 << "/" << o.iterations << " energy "
            << stats.energies.back();
-      o.progress(line.str());
+      const auto pixels = [&](int level) {
+        return double(o.width >> (levels - 1 - level)) * double(o.height >> (levels - 1 - level));
+      };
+      o.progress(line.str(), pyramidFraction(levels, l, it, o.iterations, pixels));
     }
   }
   stats.seconds = secondsSince(start);

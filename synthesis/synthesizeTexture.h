@@ -39,8 +39,8 @@ struct TextureSynthesisOptions {
   int sparseStep = 2;                     ///< neighbourhoods are matched on every step-th pixel
   double irlsExponent = kEnergyExponent;  ///< r of the IRLS weights ||x - z||^(r-2)
   std::uint64_t seed = 1;
-  int threads = 0;  ///< worker threads; 0 = all cores. Output does not depend on it.
-  std::function<void(const std::string&)> progress;  ///< one line per level and iteration, when set
+  int threads = 0;    ///< worker threads; 0 = all cores. Output does not depend on it.
+  Progress progress;  ///< after every level and iteration, when set
 };
 
 /// One optimised level.

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -108,10 +110,18 @@ TEST(Synthesize, StatisticsHaveEnergiesTimesAndCoverage) {
   SynthesisOptions o = smallOptions(Method::ChenWang);
   o.size = 16;
   std::vector<std::string> lines;
-  o.progress = [&](const std::string& l) { lines.push_back(l); };
+  std::vector<double> fractions;
+  o.progress = [&](const std::string& l, double fraction) {
+    lines.push_back(l);
+    fractions.push_back(fraction);
+  };
   const SynthesisResult r = synthesizeSolid(ex, o);
   const SynthesisStatistics& s = r.statistics;
   EXPECT_EQ(lines.size(), std::size_t(o.levels * o.iterations));
+  // A 16^3 iteration costs 8 times an 8^3 one: the first of 3 iterations at 8^3 is 1/27 of the work.
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_NEAR(fractions.front(), 1.0 / (3 * 9), 1e-12);
+  EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
   ASSERT_EQ(s.levels.size(), 2u);
   EXPECT_EQ(s.levels[0].volumeSize, 8);
   EXPECT_EQ(s.levels[1].volumeSize, 16);
