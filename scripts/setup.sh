@@ -6,7 +6,7 @@ packages=(
   libopencv-dev
   libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
   libcgal-dev libgmp-dev libmpfr-dev
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev openimageio-tools libtiff-dev
   libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libfaiss-dev libblas-dev liblapack-dev
   libgtest-dev

@@ -74,12 +74,16 @@ TEST(SynthesizeFromVolume, RepeatedTileIsRebuiltFromCoherentCopies) {
 TEST(SynthesizeFromVolume, SameVolumeAtAnyThreadCount) {
   const DenseVolume exemplar = layeredVolume(30, 7, 2);
   VolumeSynthesisOptions o = smallOptions(20);
-  o.threads = 1;
-  const VolumeSynthesisResult one = synthesizeFromVolume(exemplar, o);
-  o.threads = 2;
-  const VolumeSynthesisResult two = synthesizeFromVolume(exemplar, o);
-  EXPECT_EQ(one.values.values, two.values.values);
-  EXPECT_EQ(one.source, two.source);
+  const FrameField slant3d = builtinFrameField("slant3d", o.dims);
+  for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
+    o.field = field;
+    o.threads = 1;
+    const VolumeSynthesisResult one = synthesizeFromVolume(exemplar, o);
+    o.threads = 2;
+    const VolumeSynthesisResult two = synthesizeFromVolume(exemplar, o);
+    EXPECT_EQ(one.values.values, two.values.values) << (field ? "slant3d" : "no field");
+    EXPECT_EQ(one.source, two.source);
+  }
 }
 
 TEST(SynthesizeFromVolume, RegionEqualsTheSameBoxOfTheWholeVolume) {
