@@ -102,9 +102,13 @@ std::uint64_t valueBytes(const std::string& treeType) {
 long checkRootTiles(Reader& file, std::uint64_t valueSize, const std::string& grid) {
   file.skip(4 + valueSize, "tree");  // buffer count, background
   const auto tiles = file.value<std::uint32_t>("tree");
-  file.value<std::uint32_t>("tree");  // children
+  const auto children = file.value<std::uint32_t>("tree");
   const std::uint64_t tileBytes = 12 + valueSize + 1;
   if (tiles > file.remaining() / tileBytes) file.fail(grid + " has more tiles than bytes");
+  // A child is at least its origin and two 32768-bit masks; OpenVDB allocates each (0.5 MB or
+  // more) before reading it, also past the end of the file.
+  if (children > (file.remaining() - tiles * tileBytes) / (12 + 2 * 4096))
+    file.fail(grid + " has more nodes than bytes");
   for (std::uint32_t t = 0; t < tiles; ++t) {
     file.skip(12 + valueSize, "tree");
     if (file.value<std::uint8_t>("tree") > 1) file.fail(grid + " has a damaged tile");
