@@ -17,6 +17,9 @@ TEST(VolumeCommandLine, DropsOutputsThreadsAndQuietInEverySpelling) {
   EXPECT_EQ(volumeCommandLine({"particles", "p.png", "-oa.vdb", "--output=a.vdb", "--threads=8",
                                "--report=r.json", "--size", "32"}),
             "solidtex particles p.png --size 32");
+  EXPECT_EQ(volumeCommandLine({"particles", "p.png", "--tiff", "t", "--npy=n", "--vti", "v.vti",
+                               "--max-memory", "8G", "--size", "32"}),
+            "solidtex particles p.png --size 32");
   EXPECT_EQ(volumeCommandLine({"analyze", "p.png", "--labels", "l.png"}), "solidtex analyze p.png");
   EXPECT_EQ(volumeCommandLine({"synthesize", "e.png", "--no-quality", "--size", "32"}),
             "solidtex synthesize e.png --size 32");
