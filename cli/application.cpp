@@ -54,6 +54,11 @@ std::unique_ptr<Application> makeApplication(const std::string& commandLine) {
   return application;
 }
 
+std::string usageMessage(const CLI::App& app, const std::string& what) {
+  const auto chosen = app.get_subcommands();
+  return what + " (see solidtex " + (chosen.empty() ? "" : chosen.front()->get_name() + " ") + "--help)";
+}
+
 int runApplication(int argc, char** argv) {
   installInterruptHandlers();
   const auto application =
@@ -68,17 +73,12 @@ int runApplication(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const auto chosen = app.get_subcommands();
-    return fail(std::string(e.what()) + " (see solidtex " +
-                    (chosen.empty() ? "" : chosen.front()->get_name() + " ") + "--help)",
-                kUsage);
+    return fail(usageMessage(app, e.what()), kUsage);
   }
   try {
     return application->actions.at(app.get_subcommands().front()->get_name())();
   } catch (const OptionError& e) {
-    return fail(
-        std::string(e.what()) + " (see solidtex " + app.get_subcommands().front()->get_name() + " --help)",
-        kUsage);
+    return fail(usageMessage(app, e.what()), kUsage);
   } catch (const std::bad_alloc&) {
     return fail("out of memory (see --max-memory; a smaller size needs less)", kFailed);
   } catch (const std::exception& e) {

@@ -25,6 +25,9 @@ struct Application {
 /// Builds the parser; `commandLine` is what volumes record (volumeCommandLine).
 std::unique_ptr<Application> makeApplication(const std::string& commandLine);
 
+/// What the command line says for a wrong command line: `what` and where to look for help.
+std::string usageMessage(const CLI::App& app, const std::string& what);
+
 /// Parses argv and runs the chosen subcommand: the exit code, with one `solidtex: error:` line on
 /// stderr for any failure.
 int runApplication(int argc, char** argv);
