@@ -79,7 +79,7 @@ nlohmann::json PhaseTimer::finish() {
 }
 
 std::string progressText(const std::string& step, double fraction, double secondsLeft) {
-  if (fraction < 0) return step;
+  if (!(fraction >= 0)) return step;  // unknown, or NaN
   constexpr int kBarWidth = 24;
   fraction = std::min(fraction, 1.0);
   const int filled = int(fraction * kBarWidth + 0.5);
@@ -104,7 +104,10 @@ std::string progressText(const std::string& step, double fraction, double second
 void ProgressLine::update(const std::string& step, double fraction) {
   if (!enabled_) return;
   const auto now = Clock::now();
-  if (fraction >= 0 && !firstFraction_) firstFraction_ = now;
+  if (fraction >= 0 && !firstFraction_) {
+    firstFraction_ = now;
+    fractionAtFirst_ = fraction;
+  }
   const bool terminal = isatty(STDERR_FILENO);
   // A log gets a line every ten seconds at most; a terminal sees the line rewritten ten times a second.
   const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(10000);
@@ -112,7 +115,7 @@ void ProgressLine::update(const std::string& step, double fraction) {
   started_ = true;
   last_ = now;
   if (!terminal) {
-    if (fraction < 0)
+    if (!(fraction >= 0))
       std::fprintf(stderr, "%s\n", step.c_str());
     else
       std::fprintf(stderr, "%s (%d%%)\n", step.c_str(), int(std::min(fraction, 1.0) * 100));
@@ -120,7 +123,8 @@ void ProgressLine::update(const std::string& step, double fraction) {
   }
   // The rate so far, once there is enough of it to go by, gives the time left.
   const double elapsed = firstFraction_ ? std::chrono::duration<double>(now - *firstFraction_).count() : 0;
-  const double left = fraction > 0.01 && elapsed > 2 ? elapsed * (1 - fraction) / fraction : -1;
+  const double gained = fraction - fractionAtFirst_;
+  const double left = gained > 0.01 && elapsed > 2 ? elapsed * (1 - fraction) / gained : -1;
   std::fprintf(stderr, "\r\033[K%s", progressText(step, fraction, left).c_str());
   dirty_ = true;
 }

@@ -73,6 +73,7 @@ private:
   bool started_ = false;
   Clock::time_point last_{};
   std::optional<Clock::time_point> firstFraction_;  ///< when the current estimate began
+  double fractionAtFirst_ = 0;                      ///< and the share done then
 };
 
 /// The terminal's progress line: "STEP [########------------] 42% 1m 23s left"; no bar for a

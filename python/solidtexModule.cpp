@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <string>
@@ -28,8 +29,13 @@ namespace solidtex::python {
 namespace {
 
 /// A failure that the command line reports with exit code 1 (bad input, an unwritable output, too
-/// little memory); a wrong command line raises ValueError, as it exits with 2.
-py::object errorType;
+/// little memory); a wrong command line raises ValueError, as it exits with 2. Never destroyed: the
+/// interpreter may be gone by then.
+py::object* errorType = nullptr;
+
+/// A command owns process-wide state while it runs (one OutputFiles, stdout, stderr's descriptor,
+/// the address-space cap): Python threads take turns.
+std::mutex commandMutex;
 
 /// Keyword arguments as options: size=64 is --size 64, no_split=True is --no-split, dims=(64, 64,
 /// 32) is --dims 64 64 32; None and False leave an option out.
@@ -70,6 +76,7 @@ void runCommand(const std::vector<std::string>& arguments) {
   bool outOfMemory = false;
   {
     py::gil_scoped_release released;
+    const std::lock_guard<std::mutex> oneAtATime(commandMutex);
     const auto application = cli::makeApplication(cli::volumeCommandLine(arguments));
     CLI::App& app = application->app;
     std::vector<std::string> argv{"solidtex"};
@@ -93,7 +100,7 @@ void runCommand(const std::vector<std::string>& arguments) {
   if (usage) throw py::value_error(*usage);
   if (outOfMemory) throw std::bad_alloc();  // pybind11 raises MemoryError
   if (failure) {
-    PyErr_SetString(errorType.ptr(), failure->c_str());
+    PyErr_SetString(errorType->ptr(), failure->c_str());
     throw py::error_already_set();
   }
 }
@@ -199,7 +206,7 @@ PYBIND11_MODULE(solidtex, m) {
       "solidtex: one photo of a material in, a 3D solid texture out. Each function runs the "
       "command of the same name with the same options (size=64 is --size 64, no_split=True "
       "is --no-split) and returns what it wrote.";
-  errorType = py::exception<std::runtime_error>(m, "Error", PyExc_RuntimeError);
+  errorType = new py::object(py::exception<std::runtime_error>(m, "Error", PyExc_RuntimeError));
   m.def(
       "analyze",
       [](const std::string& photo, py::kwargs kwargs) {

@@ -9,15 +9,15 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 tbb=$PWD/build-tsan/tbb
 if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
-  rm -rf "$tbb" && mkdir -p "$tbb/lists/partial"
+  rm -rf "$tbb" && mkdir -p "$tbb/lists/partial" "$tbb/cache/archives/partial"
   # Debian's source archive through a private list, leaving the system's apt sources untouched.
   printf 'deb-src http://deb.debian.org/debian bookworm main\ndeb-src http://deb.debian.org/debian-security bookworm-security main\n' >"$tbb/sources.list"
   apt_src=(-qq -o Dir::Etc::SourceList="$tbb/sources.list" -o Dir::Etc::SourceParts=/dev/null
-    -o Dir::State::Lists="$tbb/lists" -o APT::Sandbox::User=root)
+    -o Dir::State::Lists="$tbb/lists" -o Dir::Cache="$tbb/cache" -o APT::Sandbox::User=root)
   apt-get "${apt_src[@]}" update
   version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
   (cd "$tbb" && apt-get "${apt_src[@]}" source --download-only "onetbb=$version")
-  tar -C "$tbb" -xf "$tbb"/onetbb_*.orig.tar.*
+  tar -C "$tbb" -xf "$(ls "$tbb"/onetbb_*.orig.tar.* | grep -v '\.asc$' | head -1)"
   cmake -S "$(ls -d "$tbb"/oneTBB-*/)" -B "$tbb/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTBB_TEST=OFF \
     -DTBB_SANITIZE=thread -DTBBMALLOC_BUILD=OFF -DTBB_STRICT=OFF -DCMAKE_INSTALL_PREFIX="$tbb/install" >/dev/null
   cmake --build "$tbb/build" -j"$(nproc)"

@@ -26,6 +26,10 @@ OIIO::TypeDesc typeOf(StackSample sample) {
 OIIO::ImageSpec pageSpec(const Dims& dims, int channels, StackSample sample, const VoxelSize& voxelSize) {
   OIIO::ImageSpec spec(dims.x, dims.y, channels, typeOf(sample));
   spec.attribute("compression", "none");
+  // Classic TIFF's offsets end at 4 GiB: a larger stack (1024^3 ids) is BigTIFF, which Fiji opens
+  // through Bio-Formats.
+  const double bytes = double(dims.count()) * channels * double(typeOf(sample).size());
+  if (bytes > 3.5 * (1u << 30)) spec.attribute("tiff:bigtiff", 1);
   spec.attribute("ImageDescription", "solidtex volume: " + std::to_string(dims.z) +
                                          " slices, isotropic voxels of " + std::to_string(voxelSize.size) +
                                          " " + voxelSize.unit);

@@ -75,7 +75,7 @@ std::vector<std::string> writeVolumeExports(OutputFiles& outputs, const VolumeEx
   if (exports.npy) writeNpys(outputs, *exports.npy, volume, written);
   if (exports.vti) {
     outputs.write(*exports.vti, [&](const std::string& file) {
-      writeVti(file, volume.dims, volume.origin, voxelSize.size, vtiArrays(volume));
+      writeVti(file, volume.dims, volume.origin, 1, vtiArrays(volume));  // the .vdb's own voxel units
     });
     written.push_back(*exports.vti);
   }

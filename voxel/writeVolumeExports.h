@@ -18,7 +18,7 @@ struct VolumeExports {
   std::optional<std::string> tiff;  ///< folder: color.tif (8-bit sRGB), particle_id.tif, density.tif
   std::optional<std::string>
       npy;  ///< folder: color.npy (Z,Y,X,3 linear float32), particle_id.npy, density.npy
-  std::optional<std::string> vti;  ///< one .vti file with every grid as cell data
+  std::optional<std::string> vti;  ///< one .vti file with every grid as cell data, in the .vdb's units
 };
 
 /// Declares the exports' folders and file with `outputs` (before any work).

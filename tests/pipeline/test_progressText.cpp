@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "pipeline/jobSupport.h"
@@ -13,6 +15,7 @@ TEST(ProgressText, ABarThePercentAndTheTimeLeft) {
 
 TEST(ProgressText, NoBarWithoutAFractionNoEstimateWithoutARate) {
   EXPECT_EQ(progressText("rebuilding", -1, 10), "rebuilding");
+  EXPECT_EQ(progressText("rebuilding", std::nan(""), 10), "rebuilding");
   EXPECT_EQ(progressText("placing", 0.25, -1), "placing [######------------------]  25%");
   EXPECT_EQ(progressText("placing", 1.5, -1), "placing [########################] 100%");
 }

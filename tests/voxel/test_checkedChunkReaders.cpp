@@ -36,6 +36,12 @@ TEST(CheckedChunkReaders, ACompressedChunkLargerThanItsBoundIsRefusedBeforeAlloc
   }
 }
 
+TEST(CheckedChunkReaders, ABloscChunkShorterThanItsHeaderIsRefused) {
+  std::istringstream in(chunk(8, 8));
+  std::array<char, 64> buffer{};
+  EXPECT_THROW(openvdb::io::bloscFromStream(in, buffer.data(), buffer.size()), openvdb::RuntimeError);
+}
+
 TEST(CheckedChunkReaders, ChunksTheirWritersMakeReadBack) {
   std::array<float, 300> values{};
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = float(i % 7);

@@ -110,10 +110,10 @@ TEST(VolumeExports, VtiPlacesCellsWhereTheVdbPutsVoxels) {
   const Written w;
   const std::string vti = fileBytes(w.folder / "v.vti");
   EXPECT_NE(vti.find("WholeExtent=\"0 7 0 5 0 3\""), std::string::npos);
-  // Voxel (0,0,0) of a volume whose origin is (2,0,1) is centred at (2,0,1) x 2.5: its cell's corner
-  // lies half a voxel below.
-  EXPECT_NE(vti.find("Origin=\"3.75 -1.25 1.25\""), std::string::npos);
-  EXPECT_NE(vti.find("Spacing=\"2.5 2.5 2.5\""), std::string::npos);
+  // In the .vdb's units: voxel (0,0,0) of a volume whose origin is (2,0,1) is centred at (2,0,1),
+  // its cell's corner half a voxel below, whatever the stacks' physical voxel size.
+  EXPECT_NE(vti.find("Origin=\"1.5 -0.5 0.5\""), std::string::npos);
+  EXPECT_NE(vti.find("Spacing=\"1 1 1\""), std::string::npos);
   const std::size_t start = vti.find('_', vti.find("<AppendedData")) + 1;
   std::uint64_t bytes = 0;
   std::memcpy(&bytes, vti.data() + start, 8);

@@ -60,6 +60,8 @@ std::unique_ptr<char[]> readChunk(std::istream& is, char* data, std::int64_t siz
 
 void bloscFromStream(std::istream& is, char* data, size_t numBytes) {
   const std::int64_t size = chunkSize(is, numBytes, numBytes + BLOSC_MAX_OVERHEAD, "blosc");
+  // blosc reads its 16-byte header before anything else.
+  if (size > 0 && size < BLOSC_MIN_HEADER_LENGTH) refuse("a blosc chunk shorter than its header");
   const auto compressed = readChunk(is, data, size);
   if (!compressed) return;
   std::size_t decompressed = 0, compressedBytes = 0, blockSize = 0;
