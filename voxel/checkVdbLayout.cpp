@@ -87,13 +87,14 @@ std::uint64_t mapBytes(const std::string& type) {
   return 0;
 }
 
-// Bytes of one value of a tree type ("Tree_float_5_4_3"); 0 for a type not listed.
+// Bytes of one value of a standard tree type ("Tree_float_5_4_3", also with "_HalfFloat"); 0 for
+// another: the child bound below assumes the 5-4-3 configuration's 32768-bit masks.
 std::uint64_t valueBytes(const std::string& treeType) {
-  const std::pair<const char*, std::uint64_t> sizes[] = {
-      {"Tree_float_", 4}, {"Tree_int32_", 4},  {"Tree_vec3s_", 12}, {"Tree_double_", 8},
-      {"Tree_int64_", 8}, {"Tree_vec3d_", 24}, {"Tree_vec3i_", 12}, {"Tree_bool_", 1}};
-  for (const auto& [prefix, bytes] : sizes)
-    if (treeType.rfind(prefix, 0) == 0) return bytes;
+  const std::pair<const char*, std::uint64_t> sizes[] = {{"float", 4},  {"int32", 4}, {"vec3s", 12},
+                                                         {"double", 8}, {"int64", 8}, {"vec3d", 24},
+                                                         {"vec3i", 12}, {"bool", 1}};
+  for (const auto& [value, bytes] : sizes)
+    if (treeType.rfind(std::string("Tree_") + value + "_5_4_3", 0) == 0) return bytes;
   return 0;
 }
 
