@@ -5,9 +5,9 @@
 namespace solidtex::cli {
 
 std::string volumeCommandLine(const std::vector<std::string>& arguments) {
-  const std::set<std::string> dropWithValue = {"-o",        "--output", "--threads",   "--report",
-                                               "--preview", "--labels", "--plot",      "--tiff",
-                                               "--npy",     "--vti",    "--max-memory"};
+  const std::set<std::string> dropWithValue = {"-o",        "--output", "--threads",    "--report",
+                                               "--preview", "--labels", "--plot",       "--tiff",
+                                               "--npy",     "--vti",    "--max-memory", "--meshes"};
   std::string line = "solidtex";
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& arg = arguments[i];

@@ -184,8 +184,10 @@ ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {
 }
 
 VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) const {
-  const HullMesh& hull = hulls_[uniformIndex(rng, hulls_.size())];
-  return voxelize(hull, randomRotation(rng), width, height, depth);
+  const std::size_t hull = uniformIndex(rng, hulls_.size());
+  VoxelShape shape = voxelize(hulls_[hull], randomRotation(rng), width, height, depth);
+  shape.pose.hull = int(hull);
+  return shape;
 }
 
 }  // namespace solidtex

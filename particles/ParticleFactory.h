@@ -43,7 +43,7 @@ public:
 
   /// A particle from a random pool hull under a random rotation, non-uniformly scaled to the box
   /// (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
-  /// which loses the face layers no voxel centre reached (see voxelize). Thread-safe.
+  /// which loses the face layers no voxel centre reached (see voxelize), with its pose. Thread-safe.
   /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
   VoxelShape make(int width, int height, int depth, Rng& rng) const;
 

@@ -36,22 +36,26 @@ void checkSides(int w, int h, int d) {
 }
 
 // Turned, then scaled per axis so that the hull's box is exactly [0,w] x [0,h] x [0,d] (voxel units).
-std::vector<Eigen::Vector3d> placeInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation,
-                                        const Dims& dims) {
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(hull.vertices.size());
-  for (const Eigen::Vector3d& v : hull.vertices) points.push_back(rotation * v);
+struct BoxFit {
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d lo, scale;
+  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const {
+    return (rotation * v - lo).cwiseProduct(scale);
+  }
+  HullPose pose() const { return {-1, scale.asDiagonal() * rotation, -scale.cwiseProduct(lo)}; }
+};
+
+BoxFit fitInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation, const Dims& dims) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Eigen::Vector3d& p : points) {
+  for (const Eigen::Vector3d& v : hull.vertices) {
+    const Eigen::Vector3d p = rotation * v;
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   const Eigen::Vector3d extent = hi - lo;
   if (hull.triangles.empty() || !extent.allFinite() || extent.minCoeff() <= 0)
     throw std::invalid_argument("voxelize: the hull is empty or flat");
-  const Eigen::Vector3d scale = Eigen::Vector3d(dims.x, dims.y, dims.z).cwiseQuotient(extent);
-  for (Eigen::Vector3d& p : points) p = (p - lo).cwiseProduct(scale);
-  return points;
+  return {rotation, lo, Eigen::Vector3d(dims.x, dims.y, dims.z).cwiseQuotient(extent)};
 }
 
 GridPoint snap(const Eigen::Vector3d& p) {
@@ -222,28 +226,39 @@ std::array<Coord, 2> occupiedBox(const VoxelShape& shape) {
 void cropToOccupiedBox(VoxelShape& shape) {
   const auto [lo, hi] = occupiedBox(shape);
   if (hi[0] < 0) {
-    shape = {{1, 1, 1}, {1}};
+    shape.dims = {1, 1, 1};
+    shape.inside = {1};
     return;
   }
   const Dims cropped{hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
+  shape.pose.offset -= Eigen::Vector3d(lo[0], lo[1], lo[2]);
   if (cropped == shape.dims) return;
   std::vector<std::uint8_t> inside(cropped.count());
   for (int k = 0; k < cropped.z; ++k)
     for (int j = 0; j < cropped.y; ++j)
       std::copy_n(&shape.inside[shape.dims.index(lo[0], j + lo[1], k + lo[2])], cropped.x,
                   &inside[cropped.index(0, j, k)]);
-  shape = {cropped, std::move(inside)};
+  shape.dims = cropped;
+  shape.inside = std::move(inside);
 }
 
 }  // namespace
+
+HullMesh posedHull(const HullMesh& hull, const HullPose& pose) {
+  HullMesh posed = hull;
+  for (Eigen::Vector3d& v : posed.vertices) v = pose.linear * v + pose.offset;
+  return posed;
+}
 
 VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d) {
   checkSides(w, h, d);
   VoxelShape shape;
   shape.dims = {w, h, d};
-  const std::vector<Eigen::Vector3d> points = placeInBox(hull, rotation, shape.dims);
-  std::vector<GridPoint> grid(points.size());
-  std::transform(points.begin(), points.end(), grid.begin(), snap);
+  const BoxFit fit = fitInBox(hull, rotation, shape.dims);
+  shape.pose = fit.pose();
+  std::vector<GridPoint> grid(hull.vertices.size());
+  std::transform(hull.vertices.begin(), hull.vertices.end(), grid.begin(),
+                 [&](const Eigen::Vector3d& v) { return snap(fit(v)); });
   std::vector<Crossing> crossings;
   crossings.reserve(std::size_t(2) * std::size_t(h) * std::size_t(d));
   for (const auto& [a, b, c] : hull.triangles)

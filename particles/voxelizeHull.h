@@ -18,4 +18,9 @@ inline constexpr int kMaxParticleSide = 8192;
 /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide] or a flat or empty hull.
 VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w, int h, int d);
 
+/// The hull as `voxelize` put it into the shape `pose` describes: turned, scaled and shifted into the
+/// shape's local coordinates, where voxel (i,j,k) is the cube [i,i+1] x [j,j+1] x [k,k+1]. Its inside
+/// voxel centres are the shape's voxels, plus any thin piece voxelize dropped.
+HullMesh posedHull(const HullMesh& hull, const HullPose& pose);
+
 }  // namespace solidtex

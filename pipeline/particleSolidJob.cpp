@@ -4,10 +4,17 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include "Version.h"
+
 #include "common/Error.h"
+#include "mesh/meshTopology.h"
+#include "mesh/particleMeshes.h"
+#include "mesh/writeParticleMeshes.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
 #include "placement/cropPlacement.h"
@@ -80,6 +87,40 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
                                  : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
 }
 
+// Each mesh takes its particle's mean colour, texture and all.
+void paintMeshes(std::vector<ParticleMesh>& meshes, const SolidVolume& volume) {
+  std::vector<std::array<double, 4>> sums(meshes.size() + 1, {0, 0, 0, 0});  // per id: r, g, b, count
+  for (std::size_t i = 0; i < volume.particleId.size(); ++i) {
+    auto& sum = sums[std::size_t(volume.particleId[i])];
+    for (int c = 0; c < 3; ++c) sum[std::size_t(c)] += volume.color[i][std::size_t(c)];
+    sum[3] += 1;
+  }
+  for (ParticleMesh& m : meshes) {
+    const auto& sum = sums[std::size_t(m.id)];
+    for (int c = 0; c < 3; ++c) m.color[std::size_t(c)] = float(sum[std::size_t(c)] / std::max(1.0, sum[3]));
+  }
+}
+
+nlohmann::json meshReport(OutputFiles& outputs, const std::string& path,
+                          const std::vector<ParticleMesh>& meshes) {
+  std::size_t triangles = 0;
+  for (const ParticleMesh& m : meshes) triangles += m.surface.triangles.size();
+  const int closed = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, meshes.size()), 0,
+      [&](const tbb::blocked_range<std::size_t>& range, int count) {
+        for (std::size_t i = range.begin(); i < range.end(); ++i)
+          count += meshTopology(meshes[i].surface).closed;
+        return count;
+      },
+      std::plus<>());
+  const std::vector<std::string> files = writeParticleMeshes(outputs, path, meshes);
+  return {{"path", path},
+          {"files", files.size()},
+          {"particles", meshes.size()},
+          {"triangles", triangles},
+          {"closed_manifold", closed}};
+}
+
 }  // namespace
 
 Boundary parseBoundary(const std::string& name) {
@@ -140,6 +181,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
   addVolumeOutputs(outputs, job.output, job.report, job.preview);
   addVolumeExports(outputs, job.exports);
+  if (job.meshes) addParticleMeshes(outputs, "--meshes", *job.meshes);
   PhaseTimer timer;
   ProgressLine progress(job.progress);
 
@@ -198,8 +240,16 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
       paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
+  std::vector<ParticleMesh> meshes;
+  if (job.meshes) {
+    timer.start("meshes");
+    meshes = particleMeshes(placement, factory.hulls());
+    paintMeshes(meshes, volume);
+  }
+
   timer.start("write");
   nlohmann::json written = {{"vdb", job.output}};
+  if (job.meshes) written["meshes"] = meshReport(outputs, *job.meshes, meshes);
   if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, volume);
   // A voxel is 1 / scale of the photo's pixels, whose size in µm a user may know.
   const auto exported = writeVolumeExports(outputs, job.exports, volume, {1 / scale, "pixel"});

@@ -414,7 +414,7 @@ private:
     // update and the shape's voxelization are the two largest costs of a try.
     fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
     result_.particles.push_back(
-        {id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale});
+        {id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale, shape.pose});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += counted;
     // A particle counts by its share inside the counted box: the margin's walls keep large particles

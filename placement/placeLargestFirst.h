@@ -59,6 +59,7 @@ struct PlacedParticle {
   int bin = 0;      ///< area-histogram bin it was made for
   std::size_t voxelCount = 0;
   double voxelsPerPixel = 1;  ///< the scale it was made at: its photo particle's pixels to voxels
+  HullPose pose;  ///< its hull, rotation and scaling: posedHull(hull, pose) + origin is its surface
 };
 
 struct PlacementResult {

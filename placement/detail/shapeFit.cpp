@@ -41,6 +41,7 @@ double innerRadiusOf(const VoxelShape& shape, const Voxel& a) {
 FitShape prepareShape(const VoxelShape& shape) {
   FitShape fit;
   fit.dims = shape.dims;
+  fit.pose = shape.pose;
   fit.anchor = nearestShapeVoxel(shape, {shape.dims.x / 2, shape.dims.y / 2, shape.dims.z / 2});
   fit.innerRadius = float(innerRadiusOf(shape, fit.anchor));
   // Counting sort by squared distance, farthest first: the outer voxels are where collisions happen.

@@ -17,6 +17,7 @@ struct FitShape {
   std::vector<std::int32_t> squared;  ///< their squared distances to the anchor, non-increasing
   float innerRadius = 0;  ///< a spot needs at least this spaciousness: the nearest non-shape voxel
   float outerRadius = 0;  ///< a spot with this spaciousness always fits: just beyond the farthest voxel
+  HullPose pose;          ///< the shape's hull, rotation and scaling
 };
 
 /// Prepares a non-empty shape; O(box) time.

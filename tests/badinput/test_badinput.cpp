@@ -123,16 +123,29 @@ TEST_F(BadInput, BrokenVolumesAreRefused) {
 }
 
 TEST_F(BadInput, UnwritableOutputsAreRefusedBeforeAnyWork) {
-  for (const std::string& output :
-       {std::string("-o /proc/v.vdb"), std::string("-o OUT/missing/v.vdb"), std::string("-o OUT/"),
-        std::string("-o OUT/v.png"), std::string("-o OUT/v.vdb --report /proc/r.json"),
-        std::string("-o OUT/v.vdb --report OUT/missing/r.json"), std::string("-o OUT/v.vdb --report OUT/"),
-        std::string("-o OUT/v.vdb --report OUT/v.vdb"), std::string("-o OUT/v.vdb --report OUT/r.txt"),
-        std::string("-o OUT/v.vdb --preview IN/coins.png"), std::string("-o OUT/v.vdb --preview /proc/p"),
-        std::string("-o IN/good.vdb --mask IN/good.vdb"), std::string("-o OUT/v.vdb --tiff /proc/t"),
-        std::string("-o OUT/v.vdb --tiff IN/coins.png"), std::string("-o OUT/v.vdb --npy OUT/v.vdb"),
-        std::string("-o OUT/v.vdb --vti OUT/v.vtk"), std::string("-o OUT/v.vdb --vti /proc/v.vti"),
-        std::string("-o OUT/v.vdb --vti OUT/v.vdb")})
+  for (const std::string& output : {std::string("-o /proc/v.vdb"),
+                                    std::string("-o OUT/missing/v.vdb"),
+                                    std::string("-o OUT/"),
+                                    std::string("-o OUT/v.png"),
+                                    std::string("-o OUT/v.vdb --report /proc/r.json"),
+                                    std::string("-o OUT/v.vdb --report OUT/missing/r.json"),
+                                    std::string("-o OUT/v.vdb --report OUT/"),
+                                    std::string("-o OUT/v.vdb --report OUT/v.vdb"),
+                                    std::string("-o OUT/v.vdb --report OUT/r.txt"),
+                                    std::string("-o OUT/v.vdb --preview IN/coins.png"),
+                                    std::string("-o OUT/v.vdb --preview /proc/p"),
+                                    std::string("-o IN/good.vdb --mask IN/good.vdb"),
+                                    std::string("-o OUT/v.vdb --tiff /proc/t"),
+                                    std::string("-o OUT/v.vdb --tiff IN/coins.png"),
+                                    std::string("-o OUT/v.vdb --npy OUT/v.vdb"),
+                                    std::string("-o OUT/v.vdb --vti OUT/v.vtk"),
+                                    std::string("-o OUT/v.vdb --vti /proc/v.vti"),
+                                    std::string("-o OUT/v.vdb --vti OUT/v.vdb"),
+                                    std::string("-o OUT/v.vdb --meshes /proc/m.ply"),
+                                    std::string("-o OUT/v.vdb --meshes OUT/m.stl"),
+                                    std::string("-o OUT/v.vdb --meshes /proc/m"),
+                                    std::string("-o OUT/v.vdb --meshes OUT/missing/m.obj"),
+                                    std::string("-o OUT/v.vdb --meshes IN/coins.png")})
     expectRefused("particles IN/coins.png --size 16 " + output, 1);
   expectRefused("analyze IN/coins.png --labels IN/coins.png", 1);
   expectRefused("analyze IN/coins.png --labels OUT/l.jpg", 1);

@@ -147,20 +147,26 @@ TEST(ParticleSolidJob, SectionSizingBringsSectionAreasCloserToThePhotos) {
 
 TEST(ParticleSolidJob, SameSeedGivesTheSameBytesWithOneAndTwoThreads) {
   const fs::path one = scratch("one.vdb"), two = scratch("two.vdb"), other = scratch("other.vdb");
+  const fs::path oneMeshes = scratch("one.ply"), twoMeshes = scratch("two.ply");
   {
     const ThreadLimit limit(1);
-    runParticleSolid(jobFor("coins", 48, one));
+    ParticleSolidJob job = jobFor("coins", 48, one);
+    job.meshes = oneMeshes.string();
+    runParticleSolid(job);
   }
   {
     const ThreadLimit limit(2);
-    runParticleSolid(jobFor("coins", 48, two));
-    ParticleSolidJob job = jobFor("coins", 48, other);
-    job.seed = 2;
+    ParticleSolidJob job = jobFor("coins", 48, two);
+    job.meshes = twoMeshes.string();
     runParticleSolid(job);
+    ParticleSolidJob seed2 = jobFor("coins", 48, other);
+    seed2.seed = 2;
+    runParticleSolid(seed2);
   }
   EXPECT_EQ(bytesOf(one), bytesOf(two));
+  EXPECT_EQ(bytesOf(oneMeshes), bytesOf(twoMeshes));
   EXPECT_NE(bytesOf(one), bytesOf(other));
-  for (const auto& path : {one, two, other}) fs::remove(path);
+  for (const auto& path : {one, two, other, oneMeshes, twoMeshes}) fs::remove(path);
 }
 
 TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
