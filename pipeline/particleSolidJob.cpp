@@ -186,18 +186,22 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   ProgressLine progress(job.progress);
 
   timer.start("analysis");
+  progress.update("segmenting the photo");
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const double scale = voxelsPerPixel(job, stats);
 
   timer.start("particle_shapes");
+  progress.update("building particle shapes");
   SmoothingFit smoothing;
   const ParticleFactory factory = makeFactory(job, stats, scale, smoothing);
 
   timer.start("sizing");
   SectionSizing sizing{1, {}, stats.histogram.ratios, 0, {}};
-  if (job.sizing == Sizing::Sections)
+  if (job.sizing == Sizing::Sections) {
+    progress.update("sizing particles from their sections");
     sizing = fitSectionSizing(stats, factory, scale, job.seed, kSizingBootstraps);
+  }
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = scale * sizing.sizeFactor;
 
@@ -229,6 +233,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.done();
 
   timer.start("color");
+  progress.update("painting the particles");
   std::vector<ParticlePaint> paints;
   paints.reserve(placement.particles.size());
   for (const PlacedParticle& placed : placement.particles)
@@ -243,11 +248,13 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   std::vector<ParticleMesh> meshes;
   if (job.meshes) {
     timer.start("meshes");
+    progress.update("meshing the particles");
     meshes = particleMeshes(placement, factory.hulls());
     paintMeshes(meshes, volume);
   }
 
   timer.start("write");
+  progress.update("writing the outputs");
   nlohmann::json written = {{"vdb", job.output}};
   if (job.meshes) written["meshes"] = meshReport(outputs, *job.meshes, meshes);
   if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, volume);
@@ -285,6 +292,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   report["peak_memory_mib"] = peakMemoryMiB();
   writeReport(outputs, job.report, report);
   outputs.commit();
+  progress.done();
   return report;
 }
 
