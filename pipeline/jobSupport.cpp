@@ -109,16 +109,15 @@ void ProgressLine::update(const std::string& step, double fraction) {
     fractionAtFirst_ = fraction;
   }
   const bool terminal = isatty(STDERR_FILENO);
-  // A log gets a line every ten seconds at most; a terminal sees the line rewritten ten times a second.
+  // A log gets a line with a percentage every ten seconds at most, and nothing for a step without
+  // one (a quick failure stays one line); a terminal sees the line rewritten ten times a second.
+  if (!terminal && !(fraction >= 0)) return;
   const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(10000);
   if (started_ && now - last_ < interval) return;
   started_ = true;
   last_ = now;
   if (!terminal) {
-    if (!(fraction >= 0))
-      std::fprintf(stderr, "%s\n", step.c_str());
-    else
-      std::fprintf(stderr, "%s (%d%%)\n", step.c_str(), int(std::min(fraction, 1.0) * 100));
+    std::fprintf(stderr, "%s (%d%%)\n", step.c_str(), int(std::min(fraction, 1.0) * 100));
     return;
   }
   // The rate so far, once there is enough of it to go by, gives the time left.
@@ -127,6 +126,11 @@ void ProgressLine::update(const std::string& step, double fraction) {
   const double left = gained > 0.01 && elapsed > 2 ? elapsed * (1 - fraction) / gained : -1;
   std::fprintf(stderr, "\r\033[K%s", progressText(step, fraction, left).c_str());
   dirty_ = true;
+}
+
+// Unwound by an error: the line goes, so that the error's message stands alone.
+ProgressLine::~ProgressLine() {
+  if (dirty_) std::fputs("\r\033[K", stderr);
 }
 
 void ProgressLine::done() {

@@ -57,10 +57,14 @@ private:
 };
 
 /// A progress line on stderr. On a terminal it rewrites itself: the step, a bar, the share done and
-/// an estimate of the time left; in a log it prints a plain line every ten seconds at most.
+/// an estimate of the time left; in a log it prints a plain line with the percentage every ten
+/// seconds at most, and nothing for a step without one.
 class ProgressLine {
 public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+  ~ProgressLine();
   /// `fraction`: the share of the work done in [0, 1], negative when unknown (no bar).
   void update(const std::string& step, double fraction = -1);
   /// Ends the line; the next update starts a new estimate.
