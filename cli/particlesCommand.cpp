@@ -68,9 +68,10 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--preview", job->preview,
                       "Folder for preview PNGs (middle and oblique slices beside the photo)");
   addExportOptions(*command, job->exports);
-  command->add_option("--meshes", job->meshes,
-                      "The particles' surfaces: OUT.ply (vertex colours), OUT.obj (+ OUT.mtl, an object per "
-                      "particle) or a folder of one PLY per particle");
+  command->add_option(
+      "--meshes", job->meshes,
+      "The particles' surfaces: OUT.ply (vertex colours, particle ids) or OUT.obj (+ OUT.mtl, "
+      "an object per particle)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
   return [job, size, dims, placer, sizing, arrangement, boundary, smoothing, threads] {

@@ -5,7 +5,6 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -23,10 +22,8 @@ MeshTopology meshTopology(const HullMesh& mesh) {
   if (mesh.triangles.empty() || !PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return topology;
   CGAL::Surface_mesh<Point> surface;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, surface);
-  std::vector<CGAL::Surface_mesh<Point>::Halfedge_index> pinched;
-  PMP::non_manifold_vertices(surface, std::back_inserter(pinched));
-  topology.manifold = pinched.empty();
-  topology.closed = topology.manifold && CGAL::is_closed(surface);
+  topology.manifold = true;
+  topology.closed = CGAL::is_closed(surface);
   auto component = surface.add_property_map<CGAL::Surface_mesh<Point>::Face_index, std::size_t>("f:c").first;
   topology.components = int(PMP::connected_components(surface, component));
   return topology;

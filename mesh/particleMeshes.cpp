@@ -55,6 +55,23 @@ std::map<LevelKey, HullMesh> hullLevels(const std::vector<LevelKey>& needed,
   return levels;
 }
 
+// The posed surface cut to the volume. Where simplifying made it touch itself at the cut, the hull
+// as it was; where even that cannot be cut (CGAL finds it not manifold), the whole surface.
+HullMesh cutToVolume(const HullMesh& simplified, const HullMesh& hull, const HullPose& pose,
+                     const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  const HullMesh posed = posedHull(simplified, pose);
+  try {
+    return clipToBox(posed, lo, hi);
+  } catch (const std::runtime_error&) {
+  }
+  const HullMesh whole = posedHull(largestPiece(hull), pose);
+  try {
+    if (whole.triangles.size() != posed.triangles.size()) return clipToBox(whole, lo, hi);
+  } catch (const std::runtime_error&) {
+  }
+  return posed;
+}
+
 }  // namespace
 
 std::vector<ParticleMesh> particleMeshes(const PlacementResult& placement,
@@ -77,14 +94,7 @@ std::vector<ParticleMesh> particleMeshes(const PlacementResult& placement,
     // Local voxel (i,j,k) is the cube from (i,j,k); in the index space it is centred at origin + (i,j,k).
     HullPose pose = p.pose;
     pose.offset += Eigen::Vector3d(p.origin.x, p.origin.y, p.origin.z) + lo;
-    const HullMesh& hull = levels.at(keys[i]);
-    HullMesh surface;
-    try {
-      surface = clipToBox(posedHull(hull, pose), lo, hi);
-    } catch (const std::runtime_error&) {  // simplifying made the surface touch itself where it is cut
-      surface = clipToBox(posedHull(largestPiece(hulls[std::size_t(p.pose.hull)]), pose), lo, hi);
-    }
-    meshes[i] = {p.id, {}, std::move(surface)};
+    meshes[i] = {p.id, {}, cutToVolume(levels.at(keys[i]), hulls[std::size_t(p.pose.hull)], pose, lo, hi)};
   });
   return meshes;
 }

@@ -1,6 +1,9 @@
 // CGAL translation unit: edge-collapse simplification.
 #include "mesh/simplifyMesh.h"
 
+#include <array>
+#include <stdexcept>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
@@ -48,8 +51,11 @@ HullMesh simplifyMesh(const HullMesh& mesh, std::size_t triangles) {
   for (const Surface::Face_index f : surface.faces()) {
     std::array<int, 3> triangle{};
     int corner = 0;
-    for (const Surface::Vertex_index v : surface.vertices_around_face(surface.halfedge(f)))
-      triangle[std::size_t(corner++ % 3)] = int(v.idx());
+    for (const Surface::Vertex_index v : surface.vertices_around_face(surface.halfedge(f))) {
+      if (corner == 3)
+        throw std::runtime_error("simplifyMesh: a collapse left a face that is not a triangle");
+      triangle[std::size_t(corner++)] = int(v.idx());
+    }
     out.triangles.push_back(triangle);
   }
   return out;

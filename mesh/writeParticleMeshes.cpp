@@ -4,10 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
+#include "common/Error.h"
 #include "common/srgb.h"
 #include "common/writeFileBytes.h"
 
@@ -16,15 +17,7 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "PLY files are written as little-endian");
 
-enum class MeshFormat { Ply, Obj, Folder, Unknown };
-
-MeshFormat formatOf(const std::string& path) {
-  const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension == ".ply") return MeshFormat::Ply;
-  if (extension == ".obj") return MeshFormat::Obj;
-  if (extension.empty() || std::filesystem::is_directory(path)) return MeshFormat::Folder;
-  return MeshFormat::Unknown;
-}
+bool isObj(const std::string& path) { return std::filesystem::path(path).extension() == ".obj"; }
 
 std::string mtlPathOf(const std::string& objPath) {
   return std::filesystem::path(objPath).replace_extension(".mtl").string();
@@ -53,6 +46,8 @@ void writePly(const std::string& path, std::span<const ParticleMesh> meshes) {
     vertexCount += m.surface.vertices.size();
     faceCount += m.surface.triangles.size();
   }
+  if (vertexCount > std::size_t(std::numeric_limits<std::int32_t>::max()))
+    throw InputError("cannot write " + path + ": more vertices than a PLY's int indices reach");
   std::string bytes =
       "ply\nformat binary_little_endian 1.0\n"
       "comment solidtex particle meshes: voxel (i,j,k) of the .vdb centred at (i,j,k)\n"
@@ -120,49 +115,21 @@ void writeMtl(const std::string& path, std::span<const ParticleMesh> meshes) {
 }
 
 void addParticleMeshes(OutputFiles& outputs, const std::string& option, const std::string& path) {
-  switch (formatOf(path)) {
-    case MeshFormat::Ply:
-      outputs.addFile(option, path, {".ply"});
-      break;
-    case MeshFormat::Obj:
-      outputs.addFile(option, path, {".obj"});
-      outputs.addFile(option, mtlPathOf(path), {".mtl"});
-      break;
-    case MeshFormat::Folder:
-      outputs.addFolder(option, path);
-      break;
-    case MeshFormat::Unknown:  // refused, with the extensions that would do
-      outputs.addFile(option, path, {".ply", ".obj"});
-      break;
-  }
+  outputs.addFile(option, path, {".ply", ".obj"});
+  if (isObj(path)) outputs.addFile(option, mtlPathOf(path), {".mtl"});
 }
 
 std::vector<std::string> writeParticleMeshes(OutputFiles& outputs, const std::string& path,
                                              const std::vector<ParticleMesh>& meshes) {
-  switch (formatOf(path)) {
-    case MeshFormat::Ply:
-      outputs.write(path, [&](const std::string& file) { writePly(file, meshes); });
-      return {path};
-    case MeshFormat::Obj: {
-      const std::string mtl = mtlPathOf(path);
-      outputs.write(mtl, [&](const std::string& file) { writeMtl(file, meshes); });
-      const std::string mtlName = std::filesystem::path(mtl).filename().string();
-      outputs.write(path, [&](const std::string& file) { writeObj(file, mtlName, meshes); });
-      return {path, mtl};
-    }
-    case MeshFormat::Folder:
-    case MeshFormat::Unknown:
-      break;
+  if (!isObj(path)) {
+    outputs.write(path, [&](const std::string& file) { writePly(file, meshes); });
+    return {path};
   }
-  std::vector<std::string> written;
-  for (const ParticleMesh& m : meshes) {
-    char name[32];
-    std::snprintf(name, sizeof name, "particle_%06d.ply", m.id);
-    const std::string file = (std::filesystem::path(path) / name).string();
-    outputs.write(file, [&](const std::string& temporary) { writePly(temporary, {&m, 1}); });
-    written.push_back(file);
-  }
-  return written;
+  const std::string mtl = mtlPathOf(path);
+  outputs.write(mtl, [&](const std::string& file) { writeMtl(file, meshes); });
+  const std::string mtlName = std::filesystem::path(mtl).filename().string();
+  outputs.write(path, [&](const std::string& file) { writeObj(file, mtlName, meshes); });
+  return {path, mtl};
 }
 
 }  // namespace solidtex

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Particle meshes as files: one PLY with vertex colours, one OBJ with a group and an MTL material
-/// per particle, or a folder with one PLY per particle.
+/// Particle meshes as files: one PLY with vertex colours and particle ids, or one OBJ with an object
+/// and an MTL material per particle.
 
 #include <span>
 #include <string>
@@ -12,8 +12,8 @@
 
 namespace solidtex {
 
-/// Declares `path` with `outputs` for option `option`: a `.ply` or `.obj` file (and the `.mtl`
-/// beside an OBJ), or a folder (a path without an extension, or an existing folder).
+/// Declares `path` with `outputs` for option `option`: a `.ply` or `.obj` file, and the `.mtl`
+/// beside an OBJ.
 void addParticleMeshes(OutputFiles& outputs, const std::string& option, const std::string& path);
 
 /// Writes the meshes as `addParticleMeshes` declared them, through `outputs`; returns the paths.

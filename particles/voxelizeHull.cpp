@@ -225,7 +225,9 @@ std::array<Coord, 2> occupiedBox(const VoxelShape& shape) {
 // The shape cut to its occupied box; one voxel when sampling caught none.
 void cropToOccupiedBox(VoxelShape& shape) {
   const auto [lo, hi] = occupiedBox(shape);
-  if (hi[0] < 0) {
+  if (hi[0] < 0) {  // the hull's box centred on the voxel
+    shape.pose.offset -=
+        (Eigen::Vector3d(shape.dims.x, shape.dims.y, shape.dims.z) - Eigen::Vector3d::Ones()) / 2;
     shape.dims = {1, 1, 1};
     shape.inside = {1};
     return;

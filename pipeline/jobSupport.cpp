@@ -113,7 +113,7 @@ void ProgressLine::update(const std::string& step, double fraction) {
   // one (a quick failure stays one line); a terminal sees the line rewritten ten times a second.
   if (!terminal && !(fraction >= 0)) return;
   const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(10000);
-  if (started_ && now - last_ < interval) return;
+  if (started_ && fraction >= 0 && now - last_ < interval) return;  // a new step always shows
   started_ = true;
   last_ = now;
   if (!terminal) {

@@ -43,7 +43,7 @@ struct ParticleSolidJob {
   std::optional<std::string> report;
   std::optional<std::string> preview;  ///< folder for PNGs
   VolumeExports exports;               ///< TIFF stacks, numpy arrays, .vti
-  std::optional<std::string> meshes;   ///< particle surfaces: .ply, .obj or a folder (writeParticleMeshes)
+  std::optional<std::string> meshes;   ///< particle surfaces: .ply or .obj (writeParticleMeshes)
   std::string commandLine;             ///< stored in the .vdb's metadata
   bool progress = true;
 };

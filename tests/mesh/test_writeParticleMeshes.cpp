@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "common/Error.h"
 #include "mesh/writeParticleMeshes.h"
 #include "tests/mesh/cube.h"
 #include "tests/scratchPath.h"
@@ -105,18 +106,19 @@ TEST(WriteObj, ObjectsMaterialsAndGlobalIndices) {
             "newmtl particle_7\nKd 0 0.5 1\n");
 }
 
-TEST(WriteParticleMeshes, AFolderGetsOnePlyPerParticle) {
-  const fs::path folder = scratch("boxes_folder");
-  fs::remove_all(folder);
-  OutputFiles outputs;
-  addParticleMeshes(outputs, "--meshes", folder.string());
-  const auto written = writeParticleMeshes(outputs, folder.string(), twoBoxes());
-  outputs.commit();
-  ASSERT_EQ(written.size(), 2u);
-  EXPECT_EQ(written[1], (folder / "particle_000007.ply").string());
-  for (const std::string& file : written) {
-    EXPECT_NE(bytesOf(file).find("element vertex 8\n"), std::string::npos);
+TEST(WriteParticleMeshes, TakesPlyOrObjAndRefusesAnythingElse) {
+  const fs::path ply = scratch("staged.ply");
+  fs::remove(ply);
+  {
+    OutputFiles outputs;
+    addParticleMeshes(outputs, "--meshes", ply.string());
+    EXPECT_EQ(writeParticleMeshes(outputs, ply.string(), twoBoxes()), std::vector<std::string>{ply.string()});
+    outputs.commit();
   }
+  EXPECT_NE(bytesOf(ply).find("element vertex 16\n"), std::string::npos);
+  OutputFiles outputs;
+  EXPECT_THROW(addParticleMeshes(outputs, "--meshes", scratch("meshes").string()), InputError);
+  EXPECT_THROW(addParticleMeshes(outputs, "--meshes", scratch("meshes.stl").string()), InputError);
 }
 
 }  // namespace
