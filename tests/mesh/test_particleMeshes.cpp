@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -38,6 +39,10 @@ struct MeshCase {
   double smoothing;  // HullSmoothing::radius; 0: the sharp visual hulls
   bool open;         // placed with a margin and cut out, as the open boundary does
 };
+
+void PrintTo(const MeshCase& c, std::ostream* out) {
+  *out << c.photo << " smoothing " << c.smoothing << (c.open ? " open" : " walls");
+}
 
 std::string caseName(const testing::TestParamInfo<MeshCase>& info) {
   return info.param.photo + (info.param.smoothing > 0 ? "_smooth" : "_sharp") +
