@@ -45,11 +45,18 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                    "uniform: each particle at a random spot that holds it, scattered as in most photos; "
                    "best-fit: the paper's, the tightest spot")
       ->capture_default_str();
+  auto* boundaryOption =
+      command
+          ->add_option("--boundary", *boundary,
+                       "open: the volume is cut from a larger solid, particles run through its faces; "
+                       "walls: the paper's, particles stay inside; periodic: a 3D torus whose copies tile")
+          ->capture_default_str();
   command
-      ->add_option("--boundary", *boundary,
-                   "open: the volume is cut from a larger solid, particles run through its faces; "
-                   "walls: the paper's, particles stay inside")
-      ->capture_default_str();
+      ->add_flag_callback(
+          "--periodic", [boundary] { *boundary = "periodic"; },
+          "The volume tiles without seams: particles leaving by a face come back by the opposite one "
+          "(--boundary periodic)")
+      ->excludes(boundaryOption);
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")
       ->capture_default_str();
   auto smoothing = std::make_shared<std::string>("auto");

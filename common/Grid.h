@@ -24,7 +24,15 @@ struct Dims {
             int(idx / (std::size_t(x) * std::size_t(y)))};
   }
   bool contains(int i, int j, int k) const { return i >= 0 && j >= 0 && k >= 0 && i < x && j < y && k < z; }
+  /// v's image inside the grid taken as a 3D torus, whose opposite faces meet.
+  Voxel wrap(const Voxel& v) const { return {wrapped(v.x, x), wrapped(v.y, y), wrapped(v.z, z)}; }
   friend bool operator==(const Dims&, const Dims&) = default;
+
+private:
+  static int wrapped(int v, int n) {
+    v %= n;
+    return v < 0 ? v + n : v;
+  }
 };
 
 }  // namespace solidtex

@@ -94,7 +94,11 @@ std::vector<ParticleMesh> particleMeshes(const PlacementResult& placement,
     // Local voxel (i,j,k) is the cube from (i,j,k); in the index space it is centred at origin + (i,j,k).
     HullPose pose = p.pose;
     pose.offset += Eigen::Vector3d(p.origin.x, p.origin.y, p.origin.z) + lo;
-    meshes[i] = {p.id, {}, cutToVolume(levels.at(keys[i]), hulls[std::size_t(p.pose.hull)], pose, lo, hi)};
+    const HullMesh& simplified = levels.at(keys[i]);
+    meshes[i] = {p.id,
+                 {},
+                 placement.periodic ? posedHull(simplified, pose)
+                                    : cutToVolume(simplified, hulls[std::size_t(p.pose.hull)], pose, lo, hi)};
   });
   return meshes;
 }

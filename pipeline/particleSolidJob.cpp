@@ -126,10 +126,21 @@ nlohmann::json meshReport(OutputFiles& outputs, const std::string& path,
 Boundary parseBoundary(const std::string& name) {
   if (name == "open") return Boundary::Open;
   if (name == "walls") return Boundary::Walls;
-  throw OptionError("unknown boundary '" + name + "': use open or walls");
+  if (name == "periodic") return Boundary::Periodic;
+  throw OptionError("unknown boundary '" + name + "': use open, walls or periodic");
 }
 
-const char* boundaryName(Boundary boundary) { return boundary == Boundary::Open ? "open" : "walls"; }
+const char* boundaryName(Boundary boundary) {
+  switch (boundary) {
+    case Boundary::Open:
+      return "open";
+    case Boundary::Walls:
+      return "walls";
+    case Boundary::Periodic:
+      return "periodic";
+  }
+  return "unknown";
+}
 
 int openBoundaryMargin(const ExemplarStats& stats, double particleScale) {
   return int(std::ceil(largestBoxSide(stats) * particleScale / 2));
@@ -210,9 +221,11 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const Dims placed{job.dims.x + 2 * margin, job.dims.y + 2 * margin, job.dims.z + 2 * margin};
   requireVolumeMemory(margin > 0 ? "placing particles in a block" : "placing particles", placed,
                       kPlacementBytesPerVoxel);
-  auto field = makeSpaciousnessField(job.placer, placed, placementRadiusCap(stats, particleScale));
+  const bool periodic = job.boundary == Boundary::Periodic;
+  auto field = makeSpaciousnessField(job.placer, placed, placementRadiusCap(stats, particleScale), periodic);
   PlacementOptions placementOptions;
   placementOptions.dims = placed;
+  placementOptions.periodic = periodic;
   if (margin > 0) placementOptions.counted = VolumeBox{{margin, margin, margin}, job.dims};
   placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
@@ -242,7 +255,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                        placed.origin.z + placed.box.z * 0.5},
                       placed.voxelsPerPixel});
   SolidVolume volume =
-      paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed);
+      paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed, periodic);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   std::vector<ParticleMesh> meshes;

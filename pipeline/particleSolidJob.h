@@ -17,11 +17,12 @@ namespace solidtex {
 
 /// What the volume's faces are to its particles.
 enum class Boundary {
-  Open,   ///< the volume is cut from a larger solid: particles run through its faces
-  Walls,  ///< the paper's: particles stay inside, and thin out along every face
+  Open,      ///< the volume is cut from a larger solid: particles run through its faces
+  Walls,     ///< the paper's: particles stay inside, and thin out along every face
+  Periodic,  ///< a 3D torus: particles leaving by a face come back by the opposite one, so copies tile
 };
 
-/// "open" | "walls"; throws InputError otherwise.
+/// "open" | "walls" | "periodic"; throws InputError otherwise.
 Boundary parseBoundary(const std::string& name);
 const char* boundaryName(Boundary boundary);
 

@@ -22,18 +22,25 @@ std::int64_t squaredGapToBox(int x, int y, int z, const VoxelBox& box) {
 template <class Key>
 class BruteForceField final : public BucketField<Key> {
 public:
-  BruteForceField(Dims dims, float maxRadius)
-      : BucketField<Key>(dims, squaredDistanceValues(maxRadius),
+  BruteForceField(Dims dims, float maxRadius, bool periodic)
+      : BucketField<Key>(dims, periodic, squaredDistanceValues(maxRadius),
                          [](int wall) { return std::uint64_t(wall) * std::uint64_t(wall); }) {}
 
   PlacerKind kind() const override { return PlacerKind::Brute; }
 
   void insert(const std::vector<Voxel>& voxels) override {
-    checkInside(this->dims_, voxels);
-    if (voxels.empty()) return;
     this->occupy(voxels);
-    boundary_ = boundaryVoxels(voxels);
-    const VoxelBox box = boundingBox(voxels);
+    if (voxels.empty()) return;
+    const std::vector<Voxel> boundary = boundaryVoxels(voxels);
+    for (const Voxel& shift : this->imageShifts(voxels)) lowerTowards(shifted(boundary, shift));
+  }
+
+private:
+  // Lowers the voxels within the cap of the boundary voxels (some may lie outside the volume: images
+  // of a periodic volume's particle) to their distance from them.
+  void lowerTowards(std::vector<Voxel> boundary) {
+    boundary_ = std::move(boundary);
+    const VoxelBox box = boundingBox(boundary_);
     const int reach = int(std::ceil(std::sqrt(double(this->capKey()))));
     const Dims& d = this->dims_;
     const VoxelBox region{
@@ -48,7 +55,6 @@ public:
       for (const auto& [v, key] : slice) this->queue_.lower(v, key);
   }
 
-private:
   void evaluateSlice(int z, const VoxelBox& region, const VoxelBox& box,
                      std::vector<std::pair<VoxelIndex, Key>>& changes) const {
     for (int y = region.lo.y; y <= region.hi.y; ++y)
@@ -67,8 +73,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius) {
-  return makeWithNarrowestKey<BruteForceField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius);
+std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius, bool periodic) {
+  return makeWithNarrowestKey<BruteForceField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius,
+                                               periodic);
 }
 
 }  // namespace solidtex::detail

@@ -12,6 +12,13 @@
 // two residues has a neighbour of residue 0 along every axis); a voxel with no sampled 6-neighbour
 // yet (of this particle or an earlier one) joins the sample. That is about 40 % of the boundary
 // voxels, and the triangulation's time and memory follow its vertex count.
+//
+// A periodic volume has no walls. Each sample point goes in with its images across the faces that lie
+// within the cap (plus the slack) of the volume, so every empty sphere centred in the volume that
+// is no larger than the cap is empty on the torus too: the standard triangulation with these ghost
+// points, rather than CGAL's periodic one, which needs a cubic domain and hides the conflict sets
+// the candidate queue is kept by. Eight far corners, beyond the cap of every voxel, give the empty
+// volume its first cells.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -115,10 +122,22 @@ std::vector<Point> wallPoints(Dims dims) {
   return out;
 }
 
+// Eight points farther than `reach` from every point of the volume [-1/2, n - 1/2]^3.
+std::vector<Point> farCorners(Dims dims, double reach) {
+  std::vector<Point> corners;
+  const double far = 2 * reach + 1;
+  for (int i = 0; i < 8; ++i)
+    corners.emplace_back((i & 1) ? dims.x + far : -far, (i & 2) ? dims.y + far : -far,
+                         (i & 4) ? dims.z + far : -far);
+  return corners;
+}
+
 class DelaunayField final : public SpaciousnessField {
 public:
-  DelaunayField(Dims dims, float maxRadius)
+  DelaunayField(Dims dims, float maxRadius, bool periodic)
       : dims_(dims),
+        periodic_(periodic),
+        imageReach_(std::ceil(double(maxRadius)) + 1),
         maxRadius_(maxRadius),
         capKey_(std::uint32_t(std::floor(double(maxRadius) * kSteps))),
         buckets_(std::size_t(capKey_) + 1),
@@ -128,8 +147,8 @@ public:
         hintBlocks_{(dims.x + kHintBlock - 1) / kHintBlock, (dims.y + kHintBlock - 1) / kHintBlock,
                     (dims.z + kHintBlock - 1) / kHintBlock},
         hints_(hintBlocks_.count()) {
-    const std::vector<Point> walls = wallPoints(dims);
-    triangulation_.insert(walls.begin(), walls.end());
+    const std::vector<Point> start = periodic ? farCorners(dims, imageReach_) : wallPoints(dims);
+    triangulation_.insert(start.begin(), start.end());
     for (auto v = triangulation_.finite_vertices_begin(); v != triangulation_.finite_vertices_end(); ++v)
       rememberHint(v);
     for (auto c = triangulation_.finite_cells_begin(); c != triangulation_.finite_cells_end(); ++c)
@@ -138,12 +157,13 @@ public:
 
   PlacerKind kind() const override { return PlacerKind::Delaunay; }
   Dims dims() const override { return dims_; }
+  bool periodic() const override { return periodic_; }
   float maxRadius() const override { return maxRadius_; }
   float slack() const override { return 1; }
 
   void insert(const std::vector<Voxel>& voxels) override {
-    checkInside(dims_, voxels);
-    for (const Voxel& v : voxels) occupied_.set(dims_.index(v));
+    if (!periodic_) checkInside(dims_, voxels);
+    for (const Voxel& v : voxels) occupied_.set(std::size_t(indexOf(v)));
     samplePoints(voxels);
     CGAL::spatial_sort(points_.begin(), points_.end(), Kernel());
     Cell hint = points_.empty() ? Cell() : hintCell(points_.front());
@@ -166,7 +186,7 @@ public:
     const double sample = std::sqrt(CGAL::squared_distance(p, nearest->point())) - kJitterLength;
     const double bound =
         std::max(1.0, sample - double(slack()));  // a free voxel is a whole voxel from any other
-    return float(std::min({bound, double(wallDistance(dims_, v.x, v.y, v.z)), double(maxRadius_)}));
+    return float(std::min({bound, wallCap(v), double(maxRadius_)}));
   }
 
   std::vector<Voxel> bestFit(float radius, int maxCount, Rng& rng) override {
@@ -220,19 +240,44 @@ private:
 
   bool isOccupied(std::size_t i) const { return occupied_.test(i); }
 
+  // The index of a voxel of the volume or, when it is periodic, of its image in it; -1 for a
+  // voxel beyond a wall.
+  std::ptrdiff_t indexOf(const Voxel& v) const {
+    if (periodic_) return std::ptrdiff_t(dims_.index(dims_.wrap(v)));
+    return dims_.contains(v.x, v.y, v.z) ? std::ptrdiff_t(dims_.index(v)) : -1;
+  }
+
+  // The walls' bound on a voxel's spaciousness; none in a periodic volume.
+  double wallCap(const Voxel& v) const {
+    return periodic_ ? double(maxRadius_) : double(wallDistance(dims_, v.x, v.y, v.z));
+  }
+
+  // A sample voxel's point, and in a periodic volume its images near the volume (see the top).
+  void addPoints(const Voxel& v) {
+    if (!periodic_) {
+      points_.push_back(jitteredPointOf(v));
+      return;
+    }
+    const Voxel w = dims_.wrap(v);
+    const Point p = jitteredPointOf(w);
+    for (const Voxel& s : periodicShifts(dims_, {w, w}, int(imageReach_)))
+      points_.emplace_back(p.x() + s.x, p.y() + s.y, p.z() + s.z);
+  }
+
   // The new particle's boundary voxels that face free space, sampled (see the top of the file)
   // into points_, jittered.
   void samplePoints(const std::vector<Voxel>& voxels) {
     points_.clear();
     unsampled_.clear();
     const auto take = [&](const Voxel& v) {
-      points_.push_back(jitteredPointOf(v));
-      sampled_.set(dims_.index(v));
+      addPoints(v);
+      sampled_.set(std::size_t(indexOf(v)));
     };
     for (const Voxel& v : boundaryVoxels(voxels))
       if (facesFreeSpace(v)) ((v.x + v.y + v.z) % kSampleModulus == 0 ? take(v) : unsampled_.push_back(v));
     const auto sampled = [&](int i, int j, int k) {
-      return dims_.contains(i, j, k) && sampled_.test(dims_.index(i, j, k));
+      const std::ptrdiff_t at = indexOf({i, j, k});
+      return at >= 0 && sampled_.test(std::size_t(at));
     };
     for (const Voxel& v : unsampled_)
       if (!(sampled(v.x - 1, v.y, v.z) || sampled(v.x + 1, v.y, v.z) || sampled(v.x, v.y - 1, v.z) ||
@@ -245,7 +290,8 @@ private:
   // against other particles or a wall on every open side adds nothing but points to triangulate.
   bool facesFreeSpace(const Voxel& v) const {
     const auto free = [&](int i, int j, int k) {
-      return dims_.contains(i, j, k) && !isOccupied(dims_.index(i, j, k));
+      const std::ptrdiff_t at = indexOf({i, j, k});
+      return at >= 0 && !isOccupied(std::size_t(at));
     };
     return free(v.x - 1, v.y, v.z) || free(v.x + 1, v.y, v.z) || free(v.x, v.y - 1, v.z) ||
            free(v.x, v.y + 1, v.z) || free(v.x, v.y, v.z - 1) || free(v.x, v.y, v.z + 1);
@@ -320,8 +366,7 @@ private:
     if (isOccupied(index)) return;
     const double radius = std::sqrt(CGAL::squared_distance(centre, c->vertex(0)->point()));
     const double offset = std::sqrt(CGAL::squared_distance(centre, pointOf(spot)));
-    const double value = std::min({radius - offset - kJitterLength,
-                                   double(wallDistance(dims_, spot.x, spot.y, spot.z)), double(maxRadius_)});
+    const double value = std::min({radius - offset - kJitterLength, wallCap(spot), double(maxRadius_)});
     const double key = std::floor(value * kSteps);
     if (key < 1) return;
     std::vector<Entry>& bucket = buckets_[std::size_t(key)];
@@ -346,6 +391,8 @@ private:
   }
 
   Dims dims_;
+  bool periodic_;
+  double imageReach_;  ///< images of sample points are kept this far around a periodic volume
   float maxRadius_;
   std::uint32_t capKey_;
   Delaunay triangulation_;
@@ -364,8 +411,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius) {
-  return std::make_unique<DelaunayField>(dims, maxRadius);
+std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius, bool periodic) {
+  return std::make_unique<DelaunayField>(dims, maxRadius, periodic);
 }
 
 }  // namespace solidtex::detail

@@ -21,8 +21,9 @@ std::vector<float> stepValues(float maxRadius) {
 template <class Key>
 class DiscreteVoronoiField final : public BucketField<Key> {
 public:
-  DiscreteVoronoiField(Dims dims, float maxRadius)
-      : BucketField<Key>(dims, stepValues(maxRadius), [](int wall) { return std::uint64_t(wall); }) {
+  DiscreteVoronoiField(Dims dims, float maxRadius, bool periodic)
+      : BucketField<Key>(dims, periodic, stepValues(maxRadius),
+                         [](int wall) { return std::uint64_t(wall); }) {
     const std::ptrdiff_t sx = 1, sy = dims.x, sz = std::ptrdiff_t(dims.x) * dims.y;
     std::size_t n = 0;
     for (int dz = -1; dz <= 1; ++dz)
@@ -36,11 +37,12 @@ public:
   // Fig. 6: the particle's voxels drop to 0, then a FIFO queue walks outwards and lowers every
   // neighbour whose value exceeds its predecessor's + 1. Seeding with the particle's boundary
   // voxels suffices (see boundaryVoxels), and level order makes each value final when first set.
+  // In a periodic volume the walk steps across the faces.
   void insert(const std::vector<Voxel>& voxels) override {
-    checkInside(this->dims_, voxels);
     this->occupy(voxels);
     frontier_.clear();
-    for (const Voxel& v : boundaryVoxels(voxels)) frontier_.push_back(this->index(v));
+    for (const Voxel& v : boundaryVoxels(voxels))
+      frontier_.push_back(this->index(this->periodic_ ? this->dims_.wrap(v) : v));
     for (std::size_t head = 0; head < frontier_.size(); ++head) relaxNeighbours(frontier_[head]);
   }
 
@@ -58,8 +60,15 @@ private:
               z = int(v / (VoxelIndex(d.x) * VoxelIndex(d.y)));
     const bool interior = x > 0 && y > 0 && z > 0 && x + 1 < d.x && y + 1 < d.y && z + 1 < d.z;
     for (const Offset& o : offsets_) {
-      if (!interior && !d.contains(x + o.dx, y + o.dy, z + o.dz)) continue;
-      const auto n = VoxelIndex(std::ptrdiff_t(v) + o.linear);
+      VoxelIndex n = 0;
+      if (interior)
+        n = VoxelIndex(std::ptrdiff_t(v) + o.linear);
+      else if (this->periodic_)
+        n = this->index(d.wrap({x + o.dx, y + o.dy, z + o.dz}));
+      else if (d.contains(x + o.dx, y + o.dy, z + o.dz))
+        n = this->index({x + o.dx, y + o.dy, z + o.dz});
+      else
+        continue;
       if (this->queue_.key(n) > next) {
         this->queue_.lower(n, Key(next));
         frontier_.push_back(n);
@@ -73,8 +82,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius) {
-  return makeWithNarrowestKey<DiscreteVoronoiField>(std::uint64_t(std::ceil(maxRadius)), dims, maxRadius);
+std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius, bool periodic) {
+  return makeWithNarrowestKey<DiscreteVoronoiField>(std::uint64_t(std::ceil(maxRadius)), dims, maxRadius,
+                                                    periodic);
 }
 
 }  // namespace solidtex::detail

@@ -110,8 +110,8 @@ double squaredGapBound(const VoxelBox& block, const ParticleBounds& p) {
 template <class Key>
 class EdtField final : public BucketField<Key> {
 public:
-  EdtField(Dims dims, float maxRadius)
-      : BucketField<Key>(dims, squaredDistanceValues(maxRadius),
+  EdtField(Dims dims, float maxRadius, bool periodic)
+      : BucketField<Key>(dims, periodic, squaredDistanceValues(maxRadius),
                          [](int wall) { return std::uint64_t(wall) * std::uint64_t(wall); }),
         blocks_{(dims.x + kBlock - 1) / kBlock, (dims.y + kBlock - 1) / kBlock,
                 (dims.z + kBlock - 1) / kBlock},
@@ -122,9 +122,16 @@ public:
   PlacerKind kind() const override { return PlacerKind::Edt; }
 
   void insert(const std::vector<Voxel>& voxels) override {
-    checkInside(this->dims_, voxels);
-    if (voxels.empty()) return;
     this->occupy(voxels);
+    if (voxels.empty()) return;
+    for (const Voxel& shift : this->imageShifts(voxels))
+      lowerTowards(shift == Voxel{} ? voxels : shifted(voxels, shift));
+  }
+
+private:
+  // Lowers the voxels near the particle's voxels (some may lie outside the volume: images of a
+  // periodic volume's particle) to their distance from them.
+  void lowerTowards(const std::vector<Voxel>& voxels) {
     const ParticleBounds particle = boundsOf(voxels);
     findAffectedBlocks(particle);
     if (affected_.empty()) return;
@@ -134,7 +141,6 @@ public:
       for (const auto& [v, key] : changes_[i]) this->queue_.lower(v, key);
   }
 
-private:
   // The affected blocks of one column of blocks (same bx, by) are affected_[first, first + count).
   struct BlockColumn {
     int bx, by;
@@ -265,8 +271,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius) {
-  return makeWithNarrowestKey<EdtField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius);
+std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius, bool periodic) {
+  return makeWithNarrowestKey<EdtField>(squaredDistanceValues(maxRadius).size() - 1, dims, maxRadius,
+                                        periodic);
 }
 
 }  // namespace solidtex::detail

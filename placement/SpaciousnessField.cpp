@@ -26,17 +26,18 @@ const char* placerName(PlacerKind kind) {
   return "unknown";
 }
 
-std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius) {
+std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius,
+                                                         bool periodic) {
   detail::checkFieldArguments(dims, maxRadius);
   switch (kind) {
     case PlacerKind::Discrete:
-      return detail::makeDiscreteVoronoiField(dims, maxRadius);
+      return detail::makeDiscreteVoronoiField(dims, maxRadius, periodic);
     case PlacerKind::Brute:
-      return detail::makeBruteForceField(dims, maxRadius);
+      return detail::makeBruteForceField(dims, maxRadius, periodic);
     case PlacerKind::Edt:
-      return detail::makeEdtField(dims, maxRadius);
+      return detail::makeEdtField(dims, maxRadius, periodic);
     case PlacerKind::Delaunay:
-      return detail::makeDelaunayField(dims, maxRadius);
+      return detail::makeDelaunayField(dims, maxRadius, periodic);
   }
   throw OptionError("unknown placer kind");
 }

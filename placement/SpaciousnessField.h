@@ -20,12 +20,17 @@ const char* placerName(PlacerKind kind);
 /// the voxel's centre that holds no occupied voxel centre. The walls count as occupied layers at
 /// index -1 and N on each axis, so in an empty volume voxel i has min(i+1, N-i) per axis.
 /// Values are capped at the field's maxRadius (the paper's sqrt(3)D/2): nothing larger is ever asked for.
+/// A periodic field has no walls: the volume is a 3D torus whose opposite faces meet, distances are
+/// taken around it, and insert() takes voxels anywhere, each standing for its image modulo dims (a
+/// particle that crosses a face is passed whole, running past it).
 class SpaciousnessField {
 public:
   virtual ~SpaciousnessField() = default;
   virtual PlacerKind kind() const = 0;
   /// The volume the field covers.
   virtual Dims dims() const = 0;
+  /// Whether the volume is a 3D torus (no walls).
+  virtual bool periodic() const = 0;
   /// The cap of every value.
   virtual float maxRadius() const = 0;
   /// Marks a newly placed particle's voxels (volume coordinates) occupied and updates the field.
@@ -50,7 +55,8 @@ public:
   virtual std::vector<std::pair<Voxel, float>> candidates() const { return {}; }
 };
 
-/// The field of the given kind over an empty volume.
-std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius);
+/// The field of the given kind over an empty volume, walled or periodic.
+std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius,
+                                                         bool periodic = false);
 
 }  // namespace solidtex

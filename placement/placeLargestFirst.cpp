@@ -112,6 +112,10 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options,
   }
   if (!(options.dims == field.dims()))
     throw std::invalid_argument("placement: the options' dims differ from the spaciousness field's");
+  if (options.periodic != field.periodic())
+    throw std::invalid_argument("placement: the options and the spaciousness field differ in periodicity");
+  if (options.periodic && options.counted)
+    throw std::invalid_argument("placement: a periodic volume has no margin to leave out of the count");
   const BinPairs photoPairs = pairsPerBin(stats, {});
   if (std::all_of(photoPairs.begin(), photoPairs.end(), [](const auto& pairs) { return pairs.empty(); }))
     throw InputError("placement: the photo has no particle to take sizes from");
@@ -222,6 +226,7 @@ public:
         occupied_(options.dims.count()),
         tried_(options.dims.count()) {
     result_.dims = options.dims;
+    result_.periodic = options.periodic;
     result_.ids.assign(options.dims.count(), 0);
   }
 
@@ -392,7 +397,8 @@ private:
       triedSpots_.push_back(spot);
       // The field's spots hold at least `radius` less the slack: a free bound, where at() may be a costly
       // query.
-      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims))
+      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims,
+                         options_.periodic))
         return spot;
     }
     return std::nullopt;
@@ -404,11 +410,12 @@ private:
     volumeVoxels_.clear();
     std::size_t counted = 0;
     for (const Voxel& v : shape.voxels) {
-      const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};
-      result_.ids[options_.dims.index(w)] = id;
-      occupied_.set(options_.dims.index(w));
+      const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};  // whole: the field wraps it itself
+      const Voxel inside = options_.periodic ? options_.dims.wrap(w) : w;
+      result_.ids[options_.dims.index(inside)] = id;
+      occupied_.set(options_.dims.index(inside));
       volumeVoxels_.push_back(w);
-      counted += counted_.contains(w);
+      counted += counted_.contains(inside);
     }
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.

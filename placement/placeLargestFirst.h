@@ -35,6 +35,9 @@ struct PlacementOptions {
   /// Where the area fraction is reached and counted, when the volume is a margin around the solid
   /// that will be cut out of it (particles then run through the solid's faces); empty: everywhere.
   std::optional<VolumeBox> counted;
+  /// The volume is a 3D torus: particles cross a face and continue on the opposite one (the field
+  /// must be periodic too; no counted box).
+  bool periodic = false;
   double voxelsPerPixel = 1;  ///< photo pixels to voxels
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;  ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
@@ -53,7 +56,7 @@ struct PlacementOptions {
 /// One particle in the volume.
 struct PlacedParticle {
   int id = 0;       ///< 1..P, as in the id grid
-  Voxel origin;     ///< the volume voxel of the shape's local (0,0,0)
+  Voxel origin;     ///< the volume voxel of the shape's local (0,0,0); periodic: its image may lie outside
   Dims box;         ///< the shape's tight box, voxels
   int source = -1;  ///< index into ExemplarStats::particles (colour, residual)
   int bin = 0;      ///< area-histogram bin it was made for
@@ -64,6 +67,7 @@ struct PlacedParticle {
 
 struct PlacementResult {
   Dims dims;
+  bool periodic = false;          ///< the volume is a 3D torus; particles' voxels wrap around it
   std::vector<std::int32_t> ids;  ///< dims.count(), 0 background, 1..P
   std::vector<PlacedParticle> particles;
   std::array<int, 10> placedPerBin{};
@@ -80,7 +84,7 @@ struct PlacementResult {
 /// Places particles one by one, largest area bin first, each at a spot of `field` that holds it
 /// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached. When nothing
 /// fits before that, the photo's sizes are tried again smaller (up to three times 0.85).
-/// Particles never overlap and never cross the walls.
+/// Particles never overlap and never cross the walls; in a periodic volume they cross the faces.
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,
                                   SpaciousnessField& field, const PlacementOptions& options);
 

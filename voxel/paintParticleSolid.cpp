@@ -81,11 +81,80 @@ int wrap(double x, int n) {
   return i < 0 ? i + n : i;
 }
 
+// The background residual laid into 3D. A projection cannot map a torus onto the photo, so in a
+// periodic volume each voxel within kFadeBand voxels of a face mixes the residual at its position
+// with the residual at its image across that face, half and half at the face itself: both sides of
+// the face then read the same mix. Mixing independent noise lowers its contrast, so the mix is
+// divided by the root of the summed squared weights (variance-preserving blending).
+class BackgroundResidual {
+public:
+  BackgroundResidual(const cv::Mat& residual, const Projection& projection, Dims dims, bool periodic)
+      : residual_(residual), projection_(projection), dims_(dims), periodic_(periodic) {}
+
+  cv::Vec3f at(int x, int y, int z) const {
+    if (!periodic_) return lookup(Eigen::Vector3d(x, y, z));
+    std::array<Fade, 3> fades{fadeOf(x, dims_.x), fadeOf(y, dims_.y), fadeOf(z, dims_.z)};
+    cv::Vec3f sum(0, 0, 0);
+    double squares = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      double weight = 1;
+      Eigen::Vector3d p(x, y, z);
+      for (int a = 0; a < 3; ++a) {
+        const bool across = (corner >> a) & 1;
+        if (across && fades[std::size_t(a)].shift == 0) weight = 0;
+        weight *= across ? 1 - fades[std::size_t(a)].own : fades[std::size_t(a)].own;
+        if (across) p[a] += fades[std::size_t(a)].shift;
+      }
+      if (weight <= 0) continue;
+      sum += lookup(p) * float(weight);
+      squares += weight * weight;
+    }
+    return sum / float(std::sqrt(squares));
+  }
+
+private:
+  static constexpr double kFadeBand = 16;
+
+  // The weight of a voxel's own position, and the shift to its image across the nearer face.
+  struct Fade {
+    double own = 1;
+    int shift = 0;
+  };
+
+  static Fade fadeOf(int i, int n) {
+    const double band = std::max(1.0, std::min(kFadeBand, n / 4.0));
+    const double below = i + 0.5, above = n - 0.5 - i;  // distances to the two faces
+    if (below < band) return {0.5 + 0.5 * below / band, n};
+    if (above < band) return {0.5 + 0.5 * above / band, -n};
+    return {};
+  }
+
+  cv::Vec3f lookup(const Eigen::Vector3d& p) const {
+    return residual_.at<cv::Vec3f>(wrap(p.dot(projection_.v), residual_.rows),
+                                   wrap(p.dot(projection_.u), residual_.cols));
+  }
+
+  const cv::Mat& residual_;
+  Projection projection_;
+  Dims dims_;
+  bool periodic_;
+};
+
+// The offset from c to p, in a periodic volume the shortest one around the torus.
+Eigen::Vector3d offsetFrom(const std::array<double, 3>& c, const Eigen::Vector3d& p, Dims dims,
+                           bool periodic) {
+  Eigen::Vector3d d = p - Eigen::Vector3d(c[0], c[1], c[2]);
+  if (!periodic) return d;
+  const double n[3] = {double(dims.x), double(dims.y), double(dims.z)};
+  for (int a = 0; a < 3; ++a) d[a] -= n[a] * std::round(d[a] / n[a]);
+  return d;
+}
+
 }  // namespace
 
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed) {
+                               std::uint64_t seed, bool periodic) {
   SolidVolume volume;
   volume.dims = dims;
   volume.particleId = std::move(ids);
@@ -98,7 +167,8 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
   projections.reserve(particles.size());
   for (const ParticlePaint& particle : particles)
     projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
-  const cv::Mat backgroundResidual = fillParticleHoles(stats);
+  const cv::Mat filled = fillParticleHoles(stats);
+  const BackgroundResidual backgroundResidual(filled, background, dims, periodic);
 
   tbb::parallel_for(0, dims.z, [&](int z) {
     for (int y = 0; y < dims.y; ++y)
@@ -107,18 +177,14 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
         const std::int32_t id = volume.particleId[idx];
         const Eigen::Vector3d p(x, y, z);
         if (id == 0) {
-          const cv::Vec3f r =
-              backgroundResidual.at<cv::Vec3f>(wrap(p.dot(background.v), backgroundResidual.rows),
-                                               wrap(p.dot(background.u), backgroundResidual.cols));
-          volume.color[idx] = clamp01(stats.backgroundColor + r);
+          volume.color[idx] = clamp01(stats.backgroundColor + backgroundResidual.at(x, y, z));
           continue;
         }
         const ParticlePaint& particle = particles[std::size_t(id - 1)];
         const Particle2D& source = stats.particles[std::size_t(particle.source)];
         const Projection& proj = projections[std::size_t(id - 1)];
         // Project about the particle's centre onto the centre of its photo particle's box.
-        const Eigen::Vector3d local =
-            p - Eigen::Vector3d(particle.centre[0], particle.centre[1], particle.centre[2]);
+        const Eigen::Vector3d local = offsetFrom(particle.centre, p, dims, periodic);
         const int c =
             std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
         const int r =

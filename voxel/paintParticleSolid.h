@@ -23,8 +23,11 @@ struct ParticlePaint {
 /// `ids` (dims.count(), 0 background, id i is particles[i - 1]) becomes the volume's particle_id grid;
 /// it is taken by value so that callers can move a 512^3 grid in rather than hold two copies.
 /// density is left implicit (1 on particles, as writeVdb writes it).
+/// A periodic volume (a 3D torus) is painted to tile: a particle's residual follows it across the
+/// faces, and the background's is cross-faded near each face with its continuation from the
+/// opposite one, its variance kept.
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed);
+                               std::uint64_t seed, bool periodic = false);
 
 }  // namespace solidtex

@@ -21,6 +21,7 @@ template <class Key>
 class BucketField : public SpaciousnessField {
 public:
   Dims dims() const override { return dims_; }
+  bool periodic() const override { return periodic_; }
   float maxRadius() const override { return values_.back(); }
 
   float at(const Voxel& v) const override {
@@ -53,26 +54,41 @@ public:
 protected:
   /// keyOfWall(d): the key of a voxel whose nearest wall layer is d voxels away (before the cap).
   template <class KeyOfWall>
-  BucketField(Dims dims, std::vector<float> values, KeyOfWall keyOfWall)
-      : dims_(dims), values_(std::move(values)), queue_(initialKeys(dims, capKey(), keyOfWall), capKey()) {}
+  BucketField(Dims dims, bool periodic, std::vector<float> values, KeyOfWall keyOfWall)
+      : dims_(dims),
+        periodic_(periodic),
+        values_(std::move(values)),
+        queue_(initialKeys(dims, periodic, capKey(), keyOfWall), capKey()) {}
 
   VoxelIndex index(const Voxel& v) const { return VoxelIndex(dims_.index(v)); }
   Key capKey() const { return Key(values_.size() - 1); }
 
-  /// Marks the voxels occupied (key 0).
+  /// Checks the voxels of an insertion and marks them occupied (key 0).
   void occupy(const std::vector<Voxel>& voxels) {
-    for (const Voxel& v : voxels)
-      if (queue_.key(index(v)) != 0) queue_.lower(index(v), 0);
+    if (!periodic_) checkInside(dims_, voxels);
+    for (const Voxel& v : voxels) {
+      const VoxelIndex i = index(periodic_ ? dims_.wrap(v) : v);
+      if (queue_.key(i) != 0) queue_.lower(i, 0);
+    }
+  }
+
+  /// The shifts of the voxels (a particle: insert()'s argument) whose distances the volume's voxels
+  /// can see below the cap: the voxels themselves, and in a periodic volume their images across the faces.
+  std::vector<Voxel> imageShifts(const std::vector<Voxel>& voxels) const {
+    if (!periodic_) return {Voxel{}};
+    return periodicShifts(dims_, boundingBox(voxels), int(std::ceil(double(values_.back()))));
   }
 
   Dims dims_;
+  bool periodic_;
   std::vector<float> values_;
   BucketQueue<Key> queue_;
 
 private:
   template <class KeyOfWall>
-  static std::vector<Key> initialKeys(Dims dims, Key cap, KeyOfWall keyOfWall) {
-    std::vector<Key> keys(dims.count());
+  static std::vector<Key> initialKeys(Dims dims, bool periodic, Key cap, KeyOfWall keyOfWall) {
+    std::vector<Key> keys(dims.count(), cap);
+    if (periodic) return keys;
     tbb::parallel_for(0, dims.z, [&](int k) {
       for (int j = 0; j < dims.y; ++j)
         for (int i = 0; i < dims.x; ++i)

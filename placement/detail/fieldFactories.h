@@ -6,9 +6,9 @@
 
 namespace solidtex::detail {
 
-std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius);
-std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius);
-std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius);
-std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius);
+std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius, bool periodic);
 
 }  // namespace solidtex::detail

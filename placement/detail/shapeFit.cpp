@@ -69,16 +69,20 @@ FitShape prepareShape(const VoxelShape& shape) {
 }
 
 bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied,
-            Dims dims) {
+            Dims dims, bool periodic) {
   const Voxel o = originAt(shape, spot);
-  if (o.x < 0 || o.y < 0 || o.z < 0 || o.x + shape.dims.x > dims.x || o.y + shape.dims.y > dims.y ||
-      o.z + shape.dims.z > dims.z)
+  if (periodic) {
+    if (shape.dims.x > dims.x || shape.dims.y > dims.y || shape.dims.z > dims.z) return false;
+  } else if (o.x < 0 || o.y < 0 || o.z < 0 || o.x + shape.dims.x > dims.x || o.y + shape.dims.y > dims.y ||
+             o.z + shape.dims.z > dims.z) {
     return false;
+  }
   // Squared distances are integers: d < s exactly when d^2 < s^2 - 1/2, whatever the float rounding of s.
   const double known = double(spaciousness) * double(spaciousness) - 0.5;
   for (std::size_t i = 0; i < shape.voxels.size() && shape.squared[i] >= known; ++i) {
     const Voxel& v = shape.voxels[i];
-    if (occupied.test(dims.index(o.x + v.x, o.y + v.y, o.z + v.z))) return false;
+    const Voxel at{o.x + v.x, o.y + v.y, o.z + v.z};
+    if (occupied.test(dims.index(periodic ? dims.wrap(at) : at))) return false;
   }
   return true;
 }

@@ -28,10 +28,11 @@ inline Voxel originAt(const FitShape& shape, const Voxel& spot) {
   return {spot.x - shape.anchor.x, spot.y - shape.anchor.y, spot.z - shape.anchor.z};
 }
 
-/// Whether the shape with its anchor on spot lies inside the volume and covers no occupied voxel.
-/// `spaciousness` is a lower bound of the spot's distance to the nearest occupied voxel: shape
-/// voxels nearer than that are known to be free and are not looked at.
+/// Whether the shape with its anchor on spot lies inside the volume and covers no occupied voxel;
+/// in a periodic volume, whether its voxels' images cover none, each once (the shape is no wider
+/// than the volume). `spaciousness` is a lower bound of the spot's distance to the nearest occupied
+/// voxel: shape voxels nearer than that are known to be free and are not looked at.
 bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied,
-            Dims dims);
+            Dims dims, bool periodic);
 
 }  // namespace solidtex::detail

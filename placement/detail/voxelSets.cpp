@@ -41,6 +41,29 @@ VoxelBox boundingBox(const std::vector<Voxel>& voxels) {
   return box;
 }
 
+std::vector<Voxel> periodicShifts(Dims dims, const VoxelBox& box, int reach) {
+  // Per axis, the multiples s of n with [lo - reach, hi + reach] + s meeting [0, n).
+  const auto along = [reach](int lo, int hi, int n) {
+    std::vector<int> shifts;
+    for (int s = -((hi + reach) / n + 1) * n; lo - reach + s < n; s += n)
+      if (hi + reach + s >= 0) shifts.push_back(s);
+    return shifts;
+  };
+  std::vector<Voxel> out;
+  for (int sz : along(box.lo.z, box.hi.z, dims.z))
+    for (int sy : along(box.lo.y, box.hi.y, dims.y))
+      for (int sx : along(box.lo.x, box.hi.x, dims.x)) out.push_back({sx, sy, sz});
+  return out;
+}
+
+std::vector<Voxel> shifted(const std::vector<Voxel>& voxels, const Voxel& shift) {
+  std::vector<Voxel> out(voxels.size());
+  std::transform(voxels.begin(), voxels.end(), out.begin(), [&](const Voxel& v) {
+    return Voxel{v.x + shift.x, v.y + shift.y, v.z + shift.z};
+  });
+  return out;
+}
+
 std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
   if (voxels.empty()) return {};
   const VoxelBox box = boundingBox(voxels);

@@ -26,6 +26,14 @@ void checkInside(Dims dims, const Voxel& v);
 /// Tight box of a non-empty voxel set.
 VoxelBox boundingBox(const std::vector<Voxel>& voxels);
 
+/// The shifts by whole volumes (a multiple of dims on each axis) that bring `box`, grown by `reach`
+/// on every side, to overlap the volume: where a set of voxels in a periodic volume has images
+/// that voxels of the volume can see within `reach`.
+std::vector<Voxel> periodicShifts(Dims dims, const VoxelBox& box, int reach);
+
+/// The voxels moved by `shift`.
+std::vector<Voxel> shifted(const std::vector<Voxel>& voxels, const Voxel& shift);
+
 /// Voxels of the set with a 6-neighbour outside it. For any voxel outside the set, the nearest
 /// voxel of the set in any metric that grows with each coordinate difference (Euclidean,
 /// Chebyshev) can be taken from these: the axis path from a nearest set voxel towards the outside

@@ -34,19 +34,26 @@ Surface surfaceOf(const HullMesh& mesh) {
 
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Surface>>>;
 
+// What the volume's faces are: walls; open (placed with a margin and cut out, as the open boundary
+// does); periodic (a torus, particles wrap).
+enum class Faces { Walls, Open, Periodic };
+
 struct MeshCase {
   std::string photo;
   double smoothing;  // HullSmoothing::radius; 0: the sharp visual hulls
-  bool open;         // placed with a margin and cut out, as the open boundary does
+  Faces faces;
 };
 
+const char* facesName(Faces faces) {
+  return faces == Faces::Walls ? "walls" : faces == Faces::Open ? "open" : "periodic";
+}
+
 void PrintTo(const MeshCase& c, std::ostream* out) {
-  *out << c.photo << " smoothing " << c.smoothing << (c.open ? " open" : " walls");
+  *out << c.photo << " smoothing " << c.smoothing << " " << facesName(c.faces);
 }
 
 std::string caseName(const testing::TestParamInfo<MeshCase>& info) {
-  return info.param.photo + (info.param.smoothing > 0 ? "_smooth" : "_sharp") +
-         (info.param.open ? "_open" : "_walls");
+  return info.param.photo + (info.param.smoothing > 0 ? "_smooth_" : "_sharp_") + facesName(info.param.faces);
 }
 
 class MeshesOfSolid : public testing::TestWithParam<MeshCase> {};
@@ -61,32 +68,40 @@ double voxelsPerPixelFor(const ExemplarStats& stats, int edge) {
 constexpr int kParticles = 400;  // the largest first: the smallest photo particles are a few voxels
 
 PlacementResult placeSolid(const ExemplarStats& stats, const ParticleFactory& factory, const Dims& dims,
-                           bool open) {
+                           Faces faces) {
+  const bool open = faces == Faces::Open, periodic = faces == Faces::Periodic;
   const int margin = open ? 8 : 0;
   const Dims placed{dims.x + 2 * margin, dims.y + 2 * margin, dims.z + 2 * margin};
-  const auto field = makeSpaciousnessField(PlacerKind::Edt, placed, 40);
+  const auto field = makeSpaciousnessField(PlacerKind::Edt, placed, 40, periodic);
   PlacementOptions options;
   options.dims = placed;
+  options.periodic = periodic;
   options.voxelsPerPixel = voxelsPerPixelFor(stats, dims.x);
   options.maxParticles = kParticles;
   const PlacementResult result = placeLargestFirst(stats, factory, *field, options);
   return open ? cropPlacement(result, {margin, margin, margin}, dims) : result;
 }
 
-// The voxels of the box around both a particle and its mesh.
-std::array<Voxel, 2> regionOf(const PlacedParticle& p, const HullMesh& mesh, const Dims& dims) {
+// The voxels of the box around both a particle and its mesh; in a periodic volume, where they run past
+// the faces too.
+std::array<Voxel, 2> regionOf(const PlacedParticle& p, const HullMesh& mesh, const Dims& dims,
+                              bool periodic) {
   const Eigen::Vector3d lo = mesh.boxMin(), hi = mesh.boxMax();
-  return {Voxel{std::max(0, std::min(p.origin.x, int(std::floor(lo.x())))),
-                std::max(0, std::min(p.origin.y, int(std::floor(lo.y())))),
-                std::max(0, std::min(p.origin.z, int(std::floor(lo.z()))))},
-          Voxel{std::min(dims.x - 1, std::max(p.origin.x + p.box.x, int(std::ceil(hi.x())))),
-                std::min(dims.y - 1, std::max(p.origin.y + p.box.y, int(std::ceil(hi.y())))),
-                std::min(dims.z - 1, std::max(p.origin.z + p.box.z, int(std::ceil(hi.z()))))}};
+  const Voxel from{std::min(p.origin.x, int(std::floor(lo.x()))),
+                   std::min(p.origin.y, int(std::floor(lo.y()))),
+                   std::min(p.origin.z, int(std::floor(lo.z())))};
+  const Voxel to{std::max(p.origin.x + p.box.x, int(std::ceil(hi.x()))),
+                 std::max(p.origin.y + p.box.y, int(std::ceil(hi.y()))),
+                 std::max(p.origin.z + p.box.z, int(std::ceil(hi.z())))};
+  if (periodic) return {from, to};
+  return {Voxel{std::max(0, from.x), std::max(0, from.y), std::max(0, from.z)},
+          Voxel{std::min(dims.x - 1, to.x), std::min(dims.y - 1, to.y), std::min(dims.z - 1, to.z)}};
 }
 
-// Every mesh of a 64^3 solid is closed, 2-manifold, outward and inside the volume, and encloses its
-// particle's voxel centres. The voxels inside a mesh but not in its particle are the thin parts
-// voxelize drops, in the mesh's boundary shell: within a voxel of its surface.
+// Every mesh of a 64^3 solid is closed, 2-manifold, outward and inside the volume (in a periodic one,
+// whole, running past the faces where its particle wraps), and encloses its particle's voxel centres. The
+// voxels inside a mesh but not in its particle are the thin parts voxelize drops, in the mesh's boundary
+// shell: within a voxel of its surface.
 TEST_P(MeshesOfSolid, AreClosedInsideAndVoxelizeToTheirParticles) {
   const MeshCase& c = GetParam();
   const ExemplarStats stats =
@@ -96,29 +111,39 @@ TEST_P(MeshesOfSolid, AreClosedInsideAndVoxelizeToTheirParticles) {
   options.smoothing.radius = c.smoothing;
   const ParticleFactory factory(stats, options);
   const Dims dims{64, 64, 64};
-  const PlacementResult result = placeSolid(stats, factory, dims, c.open);
+  const bool periodic = c.faces == Faces::Periodic;
+  const PlacementResult result = placeSolid(stats, factory, dims, c.faces);
   ASSERT_GT(result.particles.size(), 30u);
 
   const std::vector<ParticleMesh> meshes = particleMeshes(result, factory.hulls());
   ASSERT_EQ(meshes.size(), result.particles.size());
   std::size_t voxels = 0, outsideMesh = 0, meshOnly = 0, beyondShell = 0;
   double farthest = 0, farthestOutside = 0;  // of a mesh-only (particle-only) voxel centre from the surface
+  int wrapping = 0;
+  const Eigen::Array3d size(dims.x, dims.y, dims.z);
   for (const ParticleMesh& m : meshes) {
     SCOPED_TRACE("particle " + std::to_string(m.id));
     EXPECT_TRUE(meshTopology(m.surface).closed);
     EXPECT_GT(m.surface.volume(), 0);  // outward
-    EXPECT_TRUE((m.surface.boxMin().array() >= -0.5 - 1e-9).all());
-    EXPECT_TRUE((m.surface.boxMax().array() <= Eigen::Array3d(dims.x, dims.y, dims.z) - 0.5 + 1e-9).all());
+    const Eigen::Array3d lo = m.surface.boxMin().array(), hi = m.surface.boxMax().array();
+    const bool inside = (lo >= -0.5 - 1e-9).all() && (hi <= size - 0.5 + 1e-9).all();
+    if (periodic) {
+      wrapping += !inside;
+      EXPECT_TRUE((hi - lo < size).all());                        // its copies do not meet
+      EXPECT_TRUE((hi > -0.5).all() && (lo < size - 0.5).all());  // it starts inside the volume
+    } else {
+      EXPECT_TRUE(inside);
+    }
 
     const Surface surface = surfaceOf(m.surface);
     const CGAL::Side_of_triangle_mesh<Surface, Kernel> side(surface);
     const Tree tree(faces(surface).first, faces(surface).second, surface);
-    const auto [lo, hi] = regionOf(result.particles[std::size_t(m.id - 1)], m.surface, dims);
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x) {
+    const auto [from, to] = regionOf(result.particles[std::size_t(m.id - 1)], m.surface, dims, periodic);
+    for (int z = from.z; z <= to.z; ++z)
+      for (int y = from.y; y <= to.y; ++y)
+        for (int x = from.x; x <= to.x; ++x) {
           const Kernel::Point_3 centre(x, y, z);
-          const bool mine = result.ids[dims.index(x, y, z)] == m.id;
+          const bool mine = result.ids[dims.index(dims.wrap({x, y, z}))] == m.id;
           const bool inMesh = side(centre) == CGAL::ON_BOUNDED_SIDE;
           voxels += mine;
           if (mine == inMesh) continue;
@@ -144,13 +169,17 @@ TEST_P(MeshesOfSolid, AreClosedInsideAndVoxelizeToTheirParticles) {
   // centres behind a thin neck lie a little deeper.
   EXPECT_LE(double(beyondShell), 1e-3 * double(voxels));
   EXPECT_LT(double(meshOnly), 0.03 * double(voxels));
+  if (periodic) {
+    EXPECT_GT(wrapping, 10) << "few particles cross a face: the case tests little";
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Photos, MeshesOfSolid,
-                         testing::Values(MeshCase{"gravel", 0, false}, MeshCase{"gravel", 0.12, true},
-                                         MeshCase{"smarties", 0.12, false}, MeshCase{"coins", 0, true},
-                                         MeshCase{"leopard", 0.12, true}),
-                         caseName);
+INSTANTIATE_TEST_SUITE_P(
+    Photos, MeshesOfSolid,
+    testing::Values(MeshCase{"gravel", 0, Faces::Walls}, MeshCase{"gravel", 0.12, Faces::Open},
+                    MeshCase{"smarties", 0.12, Faces::Walls}, MeshCase{"coins", 0, Faces::Open},
+                    MeshCase{"leopard", 0.12, Faces::Open}, MeshCase{"coins", 0.12, Faces::Periodic}),
+    caseName);
 
 TEST(ParticleMeshes, RefuseAParticleWithoutItsHull) {
   PlacementResult placement;

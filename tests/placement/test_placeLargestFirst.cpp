@@ -58,11 +58,13 @@ ParticleOptions fewShapes() {
 }
 
 PlacementResult place(const ExemplarStats& stats, PlacerKind kind, Dims dims, std::uint64_t seed = 1,
-                      double voxelsPerPixel = 0.8) {
+                      double voxelsPerPixel = 0.8, bool periodic = false) {
   const ParticleFactory factory(stats, fewShapes());
-  const auto field = makeSpaciousnessField(kind, dims, float(std::sqrt(3.0) * 21 * voxelsPerPixel / 2 + 1));
+  const auto field =
+      makeSpaciousnessField(kind, dims, float(std::sqrt(3.0) * 21 * voxelsPerPixel / 2 + 1), periodic);
   PlacementOptions options;
   options.dims = dims;
+  options.periodic = periodic;
   options.voxelsPerPixel = voxelsPerPixel;
   options.seed = seed;
   return placeLargestFirst(stats, factory, *field, options);
@@ -160,6 +162,68 @@ TEST_P(PlaceLargestFirst, IsDeterministicForTheSeed) {
   // Fields, shapes made ahead and the field update on another thread: the same with one thread.
   const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   EXPECT_EQ(a.ids, place(stats, GetParam(), {32, 32, 32}, 9).ids);
+}
+
+// The torus's ids tiled 2x2x2, for checking what a user tiling the volume sees.
+std::vector<std::int32_t> tiled(const PlacementResult& r) {
+  const Dims t{2 * r.dims.x, 2 * r.dims.y, 2 * r.dims.z};
+  std::vector<std::int32_t> ids(t.count());
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = r.ids[r.dims.index(r.dims.wrap(t.voxel(i)))];
+  return ids;
+}
+
+// In a periodic volume particles run through the faces: tiled 2x2x2, every piece of a particle's id
+// that does not touch the tiling's outer faces is the whole particle (no particle is cut where the
+// copies meet), and each particle has such a piece.
+TEST_P(PlaceLargestFirst, APeriodicVolumeTilesWithWholeParticles) {
+  const ExemplarStats stats = discStats(kDiscs, 0.25);
+  const PlacementResult r = place(stats, GetParam(), {40, 44, 48}, 1, 0.8, true);
+  EXPECT_TRUE(r.periodic);
+  EXPECT_EQ(r.stopReason, "area fraction reached");
+  EXPECT_GE(r.volumeFraction, 0.25);
+  int crossing = 0;
+  std::vector<std::size_t> counted(r.particles.size() + 1, 0);
+  for (const std::int32_t id : r.ids) ++counted[std::size_t(id)];
+  for (const PlacedParticle& p : r.particles) {
+    EXPECT_EQ(counted[std::size_t(p.id)], p.voxelCount) << "particle " << p.id << " overlaps another";
+    crossing += p.origin.x < 0 || p.origin.y < 0 || p.origin.z < 0 || p.origin.x + p.box.x > r.dims.x ||
+                p.origin.y + p.box.y > r.dims.y || p.origin.z + p.box.z > r.dims.z;
+  }
+  EXPECT_GE(crossing, 3) << "no particle crosses a face: the test sees nothing";
+
+  const Dims t{2 * r.dims.x, 2 * r.dims.y, 2 * r.dims.z};
+  const std::vector<std::int32_t> ids = tiled(r);
+  std::vector<std::uint8_t> seen(ids.size(), 0);
+  std::vector<int> whole(r.particles.size() + 1, 0);
+  const int step[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+  for (std::size_t start = 0; start < ids.size(); ++start) {
+    if (ids[start] == 0 || seen[start]) continue;
+    std::vector<std::size_t> piece{start};
+    seen[start] = 1;
+    bool touchesOuterFace = false;
+    for (std::size_t q = 0; q < piece.size(); ++q) {
+      const Voxel v = t.voxel(piece[q]);
+      for (const auto& s : step) {
+        if (!t.contains(v.x + s[0], v.y + s[1], v.z + s[2])) {
+          touchesOuterFace = true;
+          continue;
+        }
+        const std::size_t n = t.index(v.x + s[0], v.y + s[1], v.z + s[2]);
+        if (ids[n] == ids[start] && !seen[n]) {
+          seen[n] = 1;
+          piece.push_back(n);
+        }
+      }
+    }
+    if (touchesOuterFace) continue;
+    const PlacedParticle& p = r.particles[std::size_t(ids[start] - 1)];
+    EXPECT_EQ(piece.size(), p.voxelCount) << "particle " << p.id << " is cut where the copies meet";
+    ++whole[std::size_t(p.id)];
+  }
+  for (const PlacedParticle& p : r.particles) EXPECT_GE(whole[std::size_t(p.id)], 1) << "particle " << p.id;
+
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_EQ(r.ids, place(stats, GetParam(), {40, 44, 48}, 1, 0.8, true).ids);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, PlaceLargestFirst,

@@ -122,6 +122,29 @@ TEST_P(FieldTest, RejectsVoxelsOutsideTheVolume) {
   EXPECT_THROW(field->insert({{1, 1, 1}, {24, 0, 0}}), std::out_of_range);
 }
 
+// On a torus no wall bounds a value and distances wrap around: a particle across a face is as near as
+// one beside it.
+TEST_P(FieldTest, MatchesTheExactSpaciousnessAroundATorus) {
+  for (const float maxRadius : {4.5f, 60.0f}) {
+    SCOPED_TRACE(testing::Message() << "maxRadius " << maxRadius);
+    const auto field = makeSpaciousnessField(GetParam(), kDims, maxRadius, true);
+    EXPECT_TRUE(field->periodic());
+    Scene scene(kDims, true);
+    EXPECT_NEAR(field->at({0, 0, 0}), maxRadius, GetParam() == PlacerKind::Delaunay ? 1.02 : 1e-4);
+    Rng rng(7);
+    int crossing = 0;
+    for (int particle = 0; particle < 10 && !HasFailure(); ++particle) {
+      const std::vector<Voxel> voxels = scene.addRandomParticle(rng);
+      crossing += std::any_of(voxels.begin(), voxels.end(),
+                              [](const Voxel& v) { return !kDims.contains(v.x, v.y, v.z); });
+      field->insert(voxels);
+      expectFieldConsistent(*field, scene, maxRadius);
+    }
+    EXPECT_GE(crossing, 2);  // the scene tests the faces
+    for (const Voxel& spot : field->bestFit(1.5f, 40, rng)) EXPECT_FALSE(scene.occupied(spot));
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllKinds, FieldTest, testing::ValuesIn(kAllKinds),
                          [](const testing::TestParamInfo<PlacerKind>& info) {
                            return placerName(info.param);
