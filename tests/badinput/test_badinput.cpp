@@ -145,7 +145,8 @@ TEST_F(BadInput, UnwritableOutputsAreRefusedBeforeAnyWork) {
                                     std::string("-o OUT/v.vdb --meshes OUT/m.stl"),
                                     std::string("-o OUT/v.vdb --meshes /proc/m"),
                                     std::string("-o OUT/v.vdb --meshes OUT/missing/m.obj"),
-                                    std::string("-o OUT/v.vdb --meshes IN/coins.png")})
+                                    std::string("-o OUT/v.vdb --meshes IN/coins.png"),
+                                    std::string("-o OUT/v.vdb --periodic --meshes /proc/m.obj")})
     expectRefused("particles IN/coins.png --size 16 " + output, 1);
   expectRefused("analyze IN/coins.png --labels IN/coins.png", 1);
   expectRefused("analyze IN/coins.png --labels OUT/l.jpg", 1);
@@ -165,7 +166,8 @@ TEST_F(BadInput, AbsurdValuesAreRefusedAsCommandLineErrors) {
   for (const std::string& option :
        {std::string("--seed -1"), std::string("--seed 18446744073709551616"), std::string("--scale nan"),
         std::string("--scale -1"), std::string("--min-area 1e12"), std::string("--size 2048"),
-        std::string("--views 9"), std::string("--max-memory lots")})
+        std::string("--views 9"), std::string("--max-memory lots"), std::string("--boundary torus"),
+        std::string("--periodic --boundary walls")})
     expectRefused("particles IN/coins.png -o OUT/v.vdb " + option, 2);
   for (const std::string& option :
        {std::string("--scale 0"), std::string("--scale 1e9"), std::string("--scale inf")})
