@@ -22,6 +22,8 @@ Action addSpaciousnessCommand(CLI::App& app) {
                    "Particles placed before the fields are compared (0: up to the photo's area fraction)")
       ->capture_default_str();
   command->add_option("--seed", job->seed, "Random seed")->capture_default_str();
+  command->add_flag("--periodic", job->periodic,
+                    "The volume is a 3D torus: particles and distances wrap around its faces");
   command->add_option("--threads", *threads, "Worker threads (0 = all cores)");
   command->add_option("--report", job->report, "Write the measurements as JSON");
   command->add_option("--plot", job->plot, "Write the error histograms as a PNG");

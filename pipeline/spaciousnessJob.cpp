@@ -59,10 +59,12 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   placementOptions.voxelsPerPixel = scale;
   placementOptions.seed = job.seed;
   placementOptions.maxParticles = job.particles;
-  auto placer = makeSpaciousnessField(PlacerKind::Edt, dims, cap);
+  placementOptions.periodic = job.periodic;
+  auto placer = makeSpaciousnessField(PlacerKind::Edt, dims, cap, job.periodic);
   const PlacementResult placement = placeLargestFirst(stats, factory, *placer, placementOptions);
   SpaciousnessEvaluation evaluation = evaluateSpaciousnessFields(
-      dims, placement.ids, cap, job.seed, [&](const std::string& step) { progress.update(step); });
+      dims, placement.ids, cap, job.seed, [&](const std::string& step) { progress.update(step); },
+      job.periodic);
   progress.done();
 
   SpaciousnessErrors errors;
@@ -81,6 +83,7 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   nlohmann::json report = {{"photo", job.photo},
                            {"dims", {dims.x, dims.y, dims.z}},
                            {"seed", job.seed},
+                           {"periodic", job.periodic},
                            {"particles", placement.particles.size()},
                            {"volume_fraction", placement.volumeFraction},
                            {"radius_cap", cap},

@@ -18,6 +18,7 @@ struct SpaciousnessJob {
   int size = 128;     ///< cubic volume edge, voxels
   int particles = 0;  ///< particles placed before the fields are compared; 0: up to the photo's fraction
   std::uint64_t seed = 1;
+  bool periodic = false;              ///< the volume is a 3D torus (particles wrap, distances too)
   std::optional<std::string> report;  ///< JSON
   std::optional<std::string> plot;    ///< PNG of the error histograms
   bool progress = true;

@@ -25,6 +25,29 @@ std::vector<std::vector<Voxel>> voxelsPerParticle(const Dims& dims, const std::v
   return out;
 }
 
+// A particle of a periodic volume that crosses a face, made whole again: on each axis its
+// coordinates are moved past the face where the widest gap between them lies, as a field takes a
+// particle (a split one would look as wide as the volume, and be updated from all its images).
+void unwrap(std::vector<Voxel>& voxels, const Dims& dims) {
+  const auto alongAxis = [&](int Voxel::*axis, int n) {
+    std::vector<std::uint8_t> used(std::size_t(n), 0);
+    for (const Voxel& v : voxels) used[std::size_t(v.*axis)] = 1;
+    int gapEnd = 0, widest = -1;  // the first used coordinate after the widest run of unused ones
+    for (int start = 0; start < n; ++start) {
+      if (used[std::size_t(start)] || used[std::size_t((start + n - 1) % n)] == 0) continue;
+      int length = 0;
+      while (length < n && used[std::size_t((start + length) % n)] == 0) ++length;
+      if (length > widest) widest = length, gapEnd = (start + length) % n;
+    }
+    if (widest <= 0) return;
+    for (Voxel& v : voxels)
+      if (v.*axis < gapEnd) v.*axis += n;
+  };
+  alongAxis(&Voxel::x, dims.x);
+  alongAxis(&Voxel::y, dims.y);
+  alongAxis(&Voxel::z, dims.z);
+}
+
 // The smallest exact value of at least r over all voxels: where an exact best fit goes.
 std::optional<double> exactBestFit(const std::vector<float>& exact, double r) {
   double best = INFINITY;
@@ -64,26 +87,29 @@ ErrorSummary summarizeErrors(std::vector<double> errors) {
 
 SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::vector<std::int32_t>& ids,
                                                   float radiusCap, std::uint64_t seed,
-                                                  const std::function<void(const std::string&)>& progress) {
+                                                  const std::function<void(const std::string&)>& progress,
+                                                  bool periodic) {
   if (dims.count() == 0 || ids.size() != dims.count())
     throw std::invalid_argument(
         "evaluateSpaciousnessFields: the ids must be one per voxel of a non-empty volume");
   const auto tell = [&](const std::string& step) {
     if (progress) progress(step);
   };
-  const auto particles = voxelsPerParticle(dims, ids);
+  auto particles = voxelsPerParticle(dims, ids);
+  if (periodic)
+    for (auto& voxels : particles) unwrap(voxels, dims);
   SpaciousnessEvaluation evaluation;
   std::vector<std::unique_ptr<SpaciousnessField>> built;
   for (const PlacerKind kind : kKinds) {
     tell(std::string("building the ") + placerName(kind) + " field");
     const auto start = std::chrono::steady_clock::now();
-    built.push_back(makeSpaciousnessField(kind, dims, radiusCap));
+    built.push_back(makeSpaciousnessField(kind, dims, radiusCap, periodic));
     for (const auto& voxels : particles) built.back()->insert(voxels);
     evaluation.fields.push_back({kind, secondsSince(start)});
   }
   tell("exact distances");
   const auto exactStart = std::chrono::steady_clock::now();
-  const std::vector<float> exact = exactSpaciousness(dims, ids, radiusCap);
+  const std::vector<float> exact = exactSpaciousness(dims, ids, radiusCap, periodic);
   evaluation.exactSeconds = secondsSince(exactStart);
 
   Rng rng(deriveSeed(seed, 0x5Ac3));

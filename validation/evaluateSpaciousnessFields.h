@@ -55,10 +55,10 @@ struct SpaciousnessEvaluation {
 ErrorSummary summarizeErrors(std::vector<double> errors);
 
 /// Builds every field from the particles of `ids` (0 free, 1..P in the order they were placed; one
-/// per voxel of a non-empty `dims`) and measures it against exactSpaciousness. `progress` is told
-/// each step's name; it may be empty.
+/// per voxel of a non-empty `dims`; periodic: a 3D torus) and measures it against exactSpaciousness.
+/// `progress` is told each step's name; it may be empty.
 SpaciousnessEvaluation evaluateSpaciousnessFields(
     const Dims& dims, const std::vector<std::int32_t>& ids, float radiusCap, std::uint64_t seed,
-    const std::function<void(const std::string&)>& progress = {});
+    const std::function<void(const std::string&)>& progress = {}, bool periodic = false);
 
 }  // namespace solidtex

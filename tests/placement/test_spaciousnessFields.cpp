@@ -191,18 +191,22 @@ TEST(DelaunayField, LargestCandidateIsTheLargestEmptyBallWithinOneVoxel) {
   }
 }
 
-// The k-d tree reference equals the brute-force distance at every voxel, capped.
+// The k-d tree reference equals the brute-force distance at every voxel, capped, with walls and
+// around a torus.
 TEST(ExactSpaciousness, MatchesBruteForceDistances) {
-  Scene scene(kDims);
-  Rng rng(29);
-  std::vector<std::int32_t> ids(kDims.count(), 0);
-  for (int particle = 1; particle <= 9; ++particle)
-    for (const Voxel& v : scene.addRandomParticle(rng)) ids[kDims.index(v)] = particle;
-  const std::vector<double> exact = scene.exactField();
-  for (const float cap : {3.5f, 100.0f}) {
-    const std::vector<float> field = exactSpaciousness(kDims, ids, cap);
-    for (std::size_t i = 0; i < exact.size(); ++i)
-      ASSERT_NEAR(field[i], std::min(exact[i], double(cap)), 1e-5) << i;
+  for (const bool periodic : {false, true}) {
+    SCOPED_TRACE(periodic ? "periodic" : "walls");
+    Scene scene(kDims, periodic);
+    Rng rng(29);
+    std::vector<std::int32_t> ids(kDims.count(), 0);
+    for (int particle = 1; particle <= 9; ++particle)
+      for (const Voxel& v : scene.addRandomParticle(rng)) ids[kDims.index(kDims.wrap(v))] = particle;
+    const std::vector<double> exact = scene.exactField();
+    for (const float cap : {3.5f, 100.0f}) {
+      const std::vector<float> field = exactSpaciousness(kDims, ids, cap, periodic);
+      for (std::size_t i = 0; i < exact.size(); ++i)
+        ASSERT_NEAR(field[i], std::min(exact[i], double(cap)), 1e-5) << i;
+    }
   }
   EXPECT_FLOAT_EQ(
       exactSpaciousness(kDims, std::vector<std::int32_t>(kDims.count(), 0), 100)[kDims.index(0, 5, 7)], 1);

@@ -21,18 +21,23 @@ TEST(SummarizeErrors, MeansExtremesAndPercentileOfKnownErrors) {
   EXPECT_EQ(summarizeErrors({}).count, 0u);
 }
 
-// Two cubes in a 24^3 box: the exact fields are exact, the others keep their stated bounds.
-TEST(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds) {
+// Two cubes in a 24^3 box, or around a 24^3 torus with the second cube across a face: the exact
+// fields are exact, the others keep their stated bounds.
+class EvaluateSpaciousnessFields : public testing::TestWithParam<bool> {};
+
+TEST_P(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds) {
+  const bool periodic = GetParam();
   const Dims dims{24, 24, 24};
   std::vector<std::int32_t> ids(dims.count(), 0);
+  const int across = periodic ? 17 : 10;  // the second cube's x: 21..25, wrapping to 21..23, 0..1
   for (int z = 4; z < 9; ++z)
     for (int y = 4; y < 9; ++y)
       for (int x = 4; x < 9; ++x) {
         ids[dims.index(Voxel{x, y, z})] = 1;
-        ids[dims.index(Voxel{x + 10, y + 12, z + 8})] = 2;
+        ids[dims.index(dims.wrap({x + across, y + 12, z + 8}))] = 2;
       }
   EXPECT_THROW(evaluateSpaciousnessFields(dims, {}, 12, 3), std::invalid_argument);
-  const SpaciousnessEvaluation e = evaluateSpaciousnessFields(dims, ids, 12, 3);
+  const SpaciousnessEvaluation e = evaluateSpaciousnessFields(dims, ids, 12, 3, {}, periodic);
   ASSERT_EQ(e.fields.size(), 4u);
   EXPECT_GT(e.largestExactEmptyBall, 4);
   EXPECT_GT(e.circumcentres, 0u);
@@ -59,6 +64,11 @@ TEST(EvaluateSpaciousnessFields, ExactFieldsAreExactAndTheOthersKeepTheirBounds)
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(WallsAndTorus, EvaluateSpaciousnessFields, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& info) {
+                           return info.param ? "periodic" : "walls";
+                         });
 
 }  // namespace
 }  // namespace solidtex
