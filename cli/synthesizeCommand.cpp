@@ -118,6 +118,10 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("--control", job->control,
                       "Photo exemplars: greyscale map the exemplar's size: brighter appears more");
   addVolumeOptions(*command, *volumeJob, *dims, *region, *kinds);
+  // Both kinds: the photo methods always synthesise on a torus, so for them the flag changes nothing.
+  command->add_flag("--periodic", volumeJob->synthesis.periodic,
+                    "Make the volume a 3D torus whose copies tile without a seam (photo exemplars always "
+                    "are; volume exemplars: each side a multiple of 2^(corrected levels))");
   for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
                            "--similarity-search", "--iterations", "--control"})
     kinds->photoOnly.push_back(command->get_option(name));

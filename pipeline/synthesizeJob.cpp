@@ -34,6 +34,7 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
   if (o.method != Method::Kopf) report["color_histogram_matching"] = o.colorHistogramMatching;
   if (o.method == Method::Skeletal) report["wavelet_levels"] = o.waveletLevels;
   report["distance"] = distanceName(o.distance);
+  report["periodic"] = true;  // every photo method synthesises on a torus (WorkVolume), flag or not
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < stats.levels.size(); ++l) {
     const LevelStatistics& level = stats.levels[l];

@@ -185,6 +185,7 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
                            {"appearance", options.window},
                            {"pca_dims", options.pcaDims},
                            {"corrections", options.corrections},
+                           {"periodic", options.periodic},
                            {"seed", options.seed}};
   const VoxelBox& box = result.box;
   if (options.region) report["region"] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};

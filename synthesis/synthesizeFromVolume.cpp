@@ -24,13 +24,27 @@ using synthesis::ExemplarDomain;
 using Coord = std::array<int, 3>;  // a domain voxel
 using Frame = Eigen::Matrix3f;     // columns: the output directions of the exemplar axes
 
+int floorMod(int v, int n) {
+  v %= n;
+  return v < 0 ? v + n : v;
+}
+
 // Synthesis works on coordinates: each voxel of a level holds the domain voxel it copies.
 struct CoordinateGrid {
   Voxel lo;  // the window's first voxel, in the level's coordinates
   Dims dims;
+  // Axes a periodic level's window covers whole (then lo is 0): reads past its faces wrap.
+  std::array<bool, 3> wraps{};
   std::vector<std::array<std::int16_t, 3>> coords;
 
-  std::size_t index(int x, int y, int z) const { return dims.index(x - lo.x, y - lo.y, z - lo.z); }
+  Voxel wrapped(int x, int y, int z) const {
+    return {wraps[0] ? floorMod(x, dims.x) : x, wraps[1] ? floorMod(y, dims.y) : y,
+            wraps[2] ? floorMod(z, dims.z) : z};
+  }
+  std::size_t index(int x, int y, int z) const {
+    const Voxel w = wrapped(x, y, z);
+    return dims.index(w.x - lo.x, w.y - lo.y, w.z - lo.z);
+  }
   Coord at(int x, int y, int z) const {
     const auto& c = coords[index(x, y, z)];
     return {c[0], c[1], c[2]};
@@ -39,7 +53,10 @@ struct CoordinateGrid {
   // coordinate moved by the exemplar step the frame maps there (`inverse` = frame transposed,
   // times the spacing). Repeating the edge voxel instead would distort the neighbourhoods along the
   // output's faces. The rule is the same at a volume's faces for a region and for the whole volume.
+  // Wrapping axes have no faces.
   Coord extendedAt(int x, int y, int z, const Frame& inverse, float h) const {
+    const Voxel w = wrapped(x, y, z);
+    x = w.x, y = w.y, z = w.z;
     const Voxel c{std::clamp(x, lo.x, lo.x + dims.x - 1), std::clamp(y, lo.y, lo.y + dims.y - 1),
                   std::clamp(z, lo.z, lo.z + dims.z - 1)};
     Coord s = at(c.x, c.y, c.z);
@@ -57,9 +74,17 @@ struct CoordinateGrid {
 // The level plan: spacing, level dims and the window each level must synthesise.
 struct LevelPlan {
   int spacing = 1;
-  Dims dims;            // the whole level
-  VoxelBox window;      // what is synthesised
+  Dims dims;                    // the whole level
+  VoxelBox window;              // what is synthesised; on a periodic level it may run past the faces
+  std::array<bool, 3> wraps{};  // axes whose window is the whole periodic level
+  bool periodic = false;
   int appearance = -1;  // index into the appearance levels; -1 = not corrected
+
+  // The level voxel a window voxel stands for (a periodic window's coordinates run past the faces).
+  Voxel onLevel(int x, int y, int z) const {
+    if (!periodic) return {x, y, z};
+    return {floorMod(x, dims.x), floorMod(y, dims.y), floorMod(z, dims.z)};
+  }
 };
 
 int ceilDiv(int a, int b) { return (a + b - 1) / b; }
@@ -68,26 +93,52 @@ int ceilDiv(int a, int b) { return (a + b - 1) / b; }
 // wrote: wrong values at a window's edge travel at most this far inwards during a level.
 int correctionReach(int corrections) { return corrections * 8 * 2; }
 
-std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBox& region, int corrected) {
-  const int finest = std::max({o.dims.x, o.dims.y, o.dims.z});
+// Halvings from the output to the coarsest level. Without --periodic the coarsest level is one voxel
+// (a level covers ceil(side / h) voxels). A periodic level must be tiled exactly by the next finer
+// one, so its pyramid stops where a side would stop being whole.
+int pyramidDepth(const VolumeSynthesisOptions& o) {
   int top = 0;
-  while ((1 << top) < finest) ++top;
+  while ((1 << top) < std::max({o.dims.x, o.dims.y, o.dims.z})) ++top;
+  if (!o.periodic) return top;
+  int depth = 0;
+  while (depth < top && o.dims.x % (2 << depth) == 0 && o.dims.y % (2 << depth) == 0 &&
+         o.dims.z % (2 << depth) == 0)
+    ++depth;
+  return depth;
+}
+
+// One axis of a level's window: `need` widened by `margin`. Without --periodic it stops at the
+// faces; a periodic window runs past them (its voxels wrap) and, once it would cover the whole
+// side, is the whole side and wraps itself.
+void widen(int needLo, int needHi, int margin, int side, bool periodic, int& lo, int& hi, bool& wraps) {
+  lo = needLo - margin, hi = needHi + margin, wraps = false;
+  if (!periodic) {
+    lo = std::max(lo, 0), hi = std::min(hi, side);
+  } else if (hi - lo >= side) {
+    lo = 0, hi = side, wraps = true;
+  }
+}
+
+std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBox& region, int corrected) {
+  const int top = pyramidDepth(o);
   std::vector<LevelPlan> plan(std::size_t(top) + 1);
   VoxelBox need = region;
   for (int l = top; l >= 0; --l) {
     LevelPlan& level = plan[std::size_t(l)];
     level.spacing = 1 << (top - l);
+    level.periodic = o.periodic;
     level.dims = {ceilDiv(o.dims.x, level.spacing), ceilDiv(o.dims.y, level.spacing),
                   ceilDiv(o.dims.z, level.spacing)};
     const int finestFirst = top - l;
     level.appearance = finestFirst < corrected ? finestFirst : -1;
     const int margin = level.appearance >= 0 ? correctionReach(o.corrections) : 0;
-    level.window.lo = {std::max(need.lo.x - margin, 0), std::max(need.lo.y - margin, 0),
-                       std::max(need.lo.z - margin, 0)};
-    level.window.hi = {std::min(need.hi.x + margin, level.dims.x), std::min(need.hi.y + margin, level.dims.y),
-                       std::min(need.hi.z + margin, level.dims.z)};
-    need.lo = {level.window.lo.x / 2, level.window.lo.y / 2, level.window.lo.z / 2};
-    need.hi = {ceilDiv(level.window.hi.x, 2), ceilDiv(level.window.hi.y, 2), ceilDiv(level.window.hi.z, 2)};
+    VoxelBox& w = level.window;
+    widen(need.lo.x, need.hi.x, margin, level.dims.x, o.periodic, w.lo.x, w.hi.x, level.wraps[0]);
+    widen(need.lo.y, need.hi.y, margin, level.dims.y, o.periodic, w.lo.y, w.hi.y, level.wraps[1]);
+    widen(need.lo.z, need.hi.z, margin, level.dims.z, o.periodic, w.lo.z, w.hi.z, level.wraps[2]);
+    // floor and ceiling of half, also for a periodic window's negative coordinates
+    need.lo = {w.lo.x >> 1, w.lo.y >> 1, w.lo.z >> 1};
+    need.hi = {(w.hi.x + 1) >> 1, (w.hi.y + 1) >> 1, (w.hi.z + 1) >> 1};
   }
   return plan;
 }
@@ -95,6 +146,8 @@ std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBo
 // The frame steering level voxel (x,y,z): the field at the centre of the finest voxels it covers.
 Frame frameAt(const VolumeSynthesisOptions& o, const LevelPlan& level, int x, int y, int z) {
   if (!o.field) return Frame::Identity();
+  const Voxel v = level.onLevel(x, y, z);
+  x = v.x, y = v.y, z = v.z;
   const int half = level.spacing / 2;
   return o.field->at(std::min(x * level.spacing + half, o.dims.x - 1),
                      std::min(y * level.spacing + half, o.dims.y - 1),
@@ -120,24 +173,36 @@ Eigen::Vector3f hashJitter(std::uint64_t seed, int level, const LevelPlan& plan,
   return {unit(0), unit(1), unit(2)};
 }
 
+// The start of a periodic pyramid whose coarsest level has several voxels: each its own random
+// domain voxel, as the coarser levels' jitter (wider than the exemplar there) would leave them.
+Coord randomStart(const ExemplarDomain& domain, std::uint64_t seed, const LevelPlan& plan, const Voxel& v) {
+  if (plan.dims.count() == 1) return {0, 0, 0};
+  Rng rng(deriveSeed(seed, 0x5354415254, std::uint64_t(plan.dims.index(v))));  // "START"
+  Coord c{};
+  for (std::size_t a = 0; a < 3; ++a) c[a] = int(uniformIndex(rng, std::uint64_t(domain.size[a])));
+  return c;
+}
+
 // Eq. 1 (and 5 under a field) followed by eq. 2: children take the parent's coordinate plus their
 // offset at this level's spacing, then a jitter of up to r x spacing.
 CoordinateGrid upsample(const CoordinateGrid* parent, const ExemplarDomain& domain,
                         const VolumeSynthesisOptions& o, const LevelPlan& level, int levelIndex) {
-  CoordinateGrid grid{level.window.lo, level.window.dims(), {}};
+  CoordinateGrid grid{level.window.lo, level.window.dims(), level.wraps, {}};
   grid.coords.resize(grid.dims.count());
   const float h = float(level.spacing);
   tbb::parallel_for(level.window.lo.z, level.window.hi.z, [&](int z) {
     for (int y = level.window.lo.y; y < level.window.hi.y; ++y)
       for (int x = level.window.lo.x; x < level.window.hi.x; ++x) {
-        Coord c{0, 0, 0};
+        const Voxel v = level.onLevel(x, y, z);
+        Coord c = parent ? Coord{} : randomStart(domain, o.seed, level, v);
         Eigen::Vector3f offset = Eigen::Vector3f::Zero();
         if (parent) {
-          c = parent->at(x / 2, y / 2, z / 2);
-          const Eigen::Vector3f child(float(x % 2) - 0.5f, float(y % 2) - 0.5f, float(z % 2) - 0.5f);
+          // shifts and masks: floor and parity also for a periodic window's negative coordinates
+          c = parent->at(x >> 1, y >> 1, z >> 1);
+          const Eigen::Vector3f child(float(x & 1) - 0.5f, float(y & 1) - 0.5f, float(z & 1) - 0.5f);
           offset = h * (frameAt(o, level, x, y, z).transpose() * child) + Eigen::Vector3f::Constant(0.5f * h);
         }
-        offset += float(o.jitter) * h * hashJitter(o.seed, levelIndex, level, x, y, z);
+        offset += float(o.jitter) * h * hashJitter(o.seed, levelIndex, level, v.x, v.y, v.z);
         grid.set(grid.index(x, y, z), shifted(domain, c, offset));
       }
   });
@@ -335,6 +400,26 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
   }
 }
 
+// A periodic output is a torus at every corrected level only when each such level halves exactly
+// into the next coarser one and has even sides (its 2x2x2 parity classes then wrap too).
+void checkPeriodicSize(const VolumeSynthesisOptions& o, int corrected) {
+  const int multiple = 1 << corrected;
+  if (!o.periodic || (o.dims.x % multiple == 0 && o.dims.y % multiple == 0 && o.dims.z % multiple == 0))
+    return;
+  auto sizes = [&](bool up) {
+    auto side = [&](int s) {
+      return std::to_string(up ? ceilDiv(s, multiple) * multiple : std::max(s / multiple, 1) * multiple);
+    };
+    return side(o.dims.x) + "x" + side(o.dims.y) + "x" + side(o.dims.z);
+  };
+  const std::string down = sizes(false), up = sizes(true);
+  throw InputError("--periodic needs every output side to be a multiple of " + std::to_string(multiple) +
+                   " (one halving per corrected level, " + std::to_string(corrected) +
+                   " here; fewer --levels lower it), got " + std::to_string(o.dims.x) + "x" +
+                   std::to_string(o.dims.y) + "x" + std::to_string(o.dims.z) + ": " + down +
+                   (up == down ? "" : " or " + up) + " would tile");
+}
+
 // Levels whose window (window x spacing) fits in half the domain's smallest side.
 int correctableLevels(const ExemplarDomain& domain, int window) {
   const int smallest = std::min({domain.size[0], domain.size[1], domain.size[2]});
@@ -377,6 +462,7 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
                       std::to_string(allowed) + ": each level's " + std::to_string(o.window) +
                       "^3 window times its spacing must fit in half the exemplar)");
   const int corrected = o.levels > 0 ? o.levels : allowed;
+  checkPeriodicSize(o, corrected);
 
   VolumeSynthesisResult result;
   result.box = o.region.value_or(VoxelBox{{0, 0, 0}, {o.dims.x, o.dims.y, o.dims.z}});

@@ -32,6 +32,9 @@ struct VolumeSynthesisOptions {
   int pcaDims = 16;     ///< appearance space dimensions
   int corrections = 4;  ///< correction passes per level, each in 8 subpasses (2x2x2 parity classes)
   const FrameField* field = nullptr;  ///< anisometric control over `dims`; null = isometric
+  /// The output is a 3D torus: neighbourhoods wrap at its faces, so copies of it tile seamlessly.
+  /// Every side must be a multiple of 2^(corrected levels). A field is read where the wrap lands.
+  bool periodic = false;
   std::uint64_t seed = 1;
   int threads = 0;    ///< worker threads; 0 = all cores. Output does not depend on it.
   Progress progress;  ///< after every level, when set

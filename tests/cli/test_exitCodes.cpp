@@ -164,6 +164,7 @@ TEST(ExitCodes, VolumeExemplarsRefuseWhatTheyCannotUse) {
        "synthesize " + ct + out + " --field spiral", "synthesize " + ct + out + " --levels 9"},
       2, dir);
   expectRefused({"synthesize " + ct + out + " --size 16 --region 0 0 0 17 4 4",
+                 "synthesize " + ct + out + " --size 100 --periodic",  // sides multiples of 8
                  "synthesize " + shellWord(dir / "missing.vdb") + out},
                 1, dir);
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "SeamStatistics.h"
 #include "common/Error.h"
 #include "common/Random.h"
 #include "synthesis/synthesizeFromVolume.h"
@@ -71,41 +72,91 @@ TEST(SynthesizeFromVolume, RepeatedTileIsRebuiltFromCoherentCopies) {
   EXPECT_GT(double(coherent) / pairs, 0.9);
 }
 
+namespace {
+
+// Per plane, the share of neighbour pairs that copy exemplar voxels exactly one step apart along
+// their axis (up to the tile's period): coherent pairs. Where two patches copied at different
+// shifts meet, or two unrelated faces, almost none are.
+test::PlaneMeans coherenceByPlane(const VolumeSynthesisResult& r, int tile) {
+  return test::planeMeans(r.values.dims, 4, [&](const Voxel& a, const Voxel& b, int axis) {
+    const auto& s = r.source[r.values.dims.index(a)];
+    const auto& n = r.source[r.values.dims.index(b)];
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int step = int(std::lround(n[c] - s[c])) - (int(c) == axis);
+      if ((step % tile + tile) % tile != 0) return 0.0;
+    }
+    return 1.0;
+  });
+}
+
+}  // namespace
+
+// Two copies side by side: across the face where they meet (the wrap plane) neighbours are as
+// coherent as across any plane inside; without --periodic that face is a seam.
+TEST(SynthesizeFromVolume, PeriodicVolumeHasNoSeamAtItsFaces) {
+  const int tile = 8;
+  const DenseVolume exemplar = tiledVolume(tile, 36, 5);
+  VolumeSynthesisOptions o = smallOptions(32);
+  o.pcaDims = 24;  // as RepeatedTileIsRebuiltFromCoherentCopies
+  o.periodic = true;
+  const test::PlaneMeans periodic = coherenceByPlane(synthesizeFromVolume(exemplar, o), tile);
+  std::cout << "periodic: " << periodic << "\n";
+  for (double wrap : periodic.wrap) EXPECT_TRUE(periodic.likeInterior(wrap)) << periodic;
+  EXPECT_NEAR(periodic.wrapMean(), periodic.mean(), periodic.band());
+  o.periodic = false;
+  const test::PlaneMeans plain = coherenceByPlane(synthesizeFromVolume(exemplar, o), tile);
+  std::cout << "not periodic: " << plain << "\n";
+  for (double wrap : plain.wrap) EXPECT_LT(wrap, plain.mean() - 3 * plain.sd()) << plain;
+}
+
 TEST(SynthesizeFromVolume, SameVolumeAtAnyThreadCount) {
   const DenseVolume exemplar = layeredVolume(30, 7, 2);
   VolumeSynthesisOptions o = smallOptions(20);
   const FrameField slant3d = builtinFrameField("slant3d", o.dims);
-  for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
-    o.field = field;
-    o.threads = 1;
-    const VolumeSynthesisResult one = synthesizeFromVolume(exemplar, o);
-    o.threads = 2;
-    const VolumeSynthesisResult two = synthesizeFromVolume(exemplar, o);
-    EXPECT_EQ(one.values.values, two.values.values) << (field ? "slant3d" : "no field");
-    EXPECT_EQ(one.source, two.source);
-  }
+  for (const bool periodic : {false, true})
+    for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
+      o.periodic = periodic;
+      o.field = field;
+      o.threads = 1;
+      const VolumeSynthesisResult one = synthesizeFromVolume(exemplar, o);
+      o.threads = 2;
+      const VolumeSynthesisResult two = synthesizeFromVolume(exemplar, o);
+      EXPECT_EQ(one.values.values, two.values.values) << (field ? "slant3d" : "no field") << periodic;
+      EXPECT_EQ(one.source, two.source);
+    }
 }
 
+// Periodic: the regions' windows run past the faces and wrap (sides multiples of 4 for this exemplar's
+// two corrected levels; the pyramid starts at 10x9x11).
 TEST(SynthesizeFromVolume, RegionEqualsTheSameBoxOfTheWholeVolume) {
   const DenseVolume exemplar = tiledVolume(6, 30, 9);
   const Dims dims{40, 36, 44};
   const FrameField slant3d = builtinFrameField("slant3d", dims);
-  for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
-    VolumeSynthesisOptions o = smallOptions(40);
-    o.dims = dims;
-    o.field = field;
-    const VolumeSynthesisResult whole = synthesizeFromVolume(exemplar, o);
-    o.region = VoxelBox{{3, 17, 30}, {21, 36, 41}};
-    const VolumeSynthesisResult part = synthesizeFromVolume(exemplar, o);
-    ASSERT_EQ(part.values.dims, (Dims{18, 19, 11}));
-    int differing = 0;
-    for (int k = 0; k < 11; ++k)
-      for (int j = 0; j < 19; ++j)
-        for (int i = 0; i < 18; ++i)
-          differing += part.source[part.values.dims.index(i, j, k)] !=
-                       whole.source[whole.values.dims.index(i + 3, j + 17, k + 30)];
-    EXPECT_EQ(differing, 0) << (field ? "slant3d" : "isometric");
-  }
+  for (const bool periodic : {false, true})
+    for (const FrameField* field : {static_cast<const FrameField*>(nullptr), &slant3d}) {
+      VolumeSynthesisOptions o = smallOptions(40);
+      o.dims = dims;
+      o.field = field;
+      o.periodic = periodic;
+      const VolumeSynthesisResult whole = synthesizeFromVolume(exemplar, o);
+      {
+        // periodic: a box at the faces, whose windows run past them
+        const VoxelBox box =
+            periodic ? VoxelBox{{0, 1, 38}, {9, 8, 44}} : VoxelBox{{3, 17, 30}, {21, 36, 41}};
+        o.region = box;
+        const VolumeSynthesisResult part = synthesizeFromVolume(exemplar, o);
+        const Dims d = box.dims();
+        ASSERT_EQ(part.values.dims, d);
+        int differing = 0;
+        for (int k = 0; k < d.z; ++k)
+          for (int j = 0; j < d.y; ++j)
+            for (int i = 0; i < d.x; ++i)
+              differing += part.source[d.index(i, j, k)] !=
+                           whole.source[whole.values.dims.index(i + box.lo.x, j + box.lo.y, k + box.lo.z)];
+        EXPECT_EQ(differing, 0) << (field ? "slant3d" : "isometric") << (periodic ? ", periodic" : "")
+                                << " box from " << box.lo.x << " " << box.lo.y << " " << box.lo.z;
+      }
+    }
 }
 
 TEST(SynthesizeFromVolume, RefusesBadInput) {
@@ -120,6 +171,18 @@ TEST(SynthesizeFromVolume, RefusesBadInput) {
   o = smallOptions(16);
   o.window = 4;
   EXPECT_THROW(synthesizeFromVolume(exemplar, o), InputError);
+  // a 16^3 domain corrects 1 level: periodic sides must be even
+  o = smallOptions(16);
+  o.dims = {16, 15, 16};
+  o.periodic = true;
+  try {
+    synthesizeFromVolume(exemplar, o);
+    FAIL() << "a periodic side of 15 was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("16x14x16 or 16x16x16 would tile"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
 }
 
 namespace {

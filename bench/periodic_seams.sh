@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Volume exemplars (Su 2008) with and without --periodic: the seam where two copies of the output meet.
+# Per run: wall time and the report's synthesis seconds, and per plane between neighbouring layers the
+# mean squared difference of neighbouring voxels' values (colour channels summed, linear; density for
+# a density exemplar): the interior planes' mean and sd over all three axes, and the wrap plane of
+# each axis (layer N-1 against layer 0, where copies meet). Photos are first made into 64^3 chen-wang
+# solids, as bench/volume_table.sh does.
+# Usage: bench/periodic_seams.sh SIZE SEED EXEMPLAR...
+#   e.g. bench/periodic_seams.sh 64 1 data/volumes/ct_stent_64.vdb data/continuous/burlap.png
+set -euo pipefail
+size=$1
+seed=$2
+shift 2
+bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+echo "| exemplar | periodic | wall s | synthesis s | interior planes: mean (sd) | wrap planes x, y, z | wrap / interior mean |"
+echo "|---|---|---|---|---|---|---|"
+for exemplar in "$@"; do
+  name=$(basename "$exemplar")
+  if [[ "$exemplar" != *.vdb ]]; then
+    "$bin" synthesize "$exemplar" -o "$out/${name%.*}_64.vdb" --size 64 --seed 1 --quiet --no-quality > /dev/null
+    exemplar="$out/${name%.*}_64.vdb"
+    name="${name%.*} solid 64^3"
+  fi
+  for periodic in no yes; do
+    flag=()
+    [ "$periodic" = yes ] && flag=(--periodic)
+    rm -rf "$out/npy"
+    /usr/bin/time -f "%e" -o "$out/time" "$bin" synthesize "$exemplar" -o "$out/v.vdb" --size "$size" \
+      --seed "$seed" --report "$out/r.json" --npy "$out/npy" --quiet --no-quality "${flag[@]}" > /dev/null
+    python3 - "$out" "$name" "$periodic" "$(cat "$out/time")" <<'PY'
+import array, ast, json, math, os, sys
+folder, name, periodic, wall = sys.argv[1:5]
+path = os.path.join(folder, "npy", "color.npy")
+if not os.path.exists(path):
+    path = os.path.join(folder, "npy", "density.npy")
+with open(path, "rb") as f:
+    raw = f.read()
+header_len = int.from_bytes(raw[8:10], "little")
+header = ast.literal_eval(raw[10:10 + header_len].decode())
+shape = header["shape"]
+values = array.array("f")
+values.frombytes(raw[10 + header_len:])
+nz, ny, nx = shape[:3]
+c = shape[3] if len(shape) > 3 else 1
+dims = (nx, ny, nz)
+
+def value(x, y, z):
+    i = ((z * ny + y) * nx + x) * c
+    return values[i:i + c]
+
+interior, wrap = [], []
+for axis in range(3):
+    n = dims[axis]
+    others = [a for a in range(3) if a != axis]
+    for layer in range(n):
+        total = 0.0
+        for j in range(dims[others[1]]):
+            for i in range(dims[others[0]]):
+                p = [0, 0, 0]
+                p[axis], p[others[0]], p[others[1]] = layer, i, j
+                q = list(p)
+                q[axis] = (layer + 1) % n
+                a, b = value(*p), value(*q)
+                total += sum((a[k] - b[k]) ** 2 for k in range(c))
+        mean = total / (dims[others[0]] * dims[others[1]])
+        (interior if layer + 1 < n else wrap).append(mean)
+m = sum(interior) / len(interior)
+sd = math.sqrt(sum((v - m) ** 2 for v in interior) / (len(interior) - 1))
+r = json.load(open(os.path.join(folder, "r.json")))
+synthesis = r["seconds"] - r["analysis_seconds"]
+print(f"| {name} | {periodic} | {float(wall):.1f} | {synthesis:.1f} | {m:.5f} ({sd:.5f}) | "
+      + ", ".join(f"{w:.5f}" for w in wrap) + " | " + ", ".join(f"{w / m:.2f}" for w in wrap) + " |")
+PY
+  done
+done
