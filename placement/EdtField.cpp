@@ -124,8 +124,12 @@ public:
   void insert(const std::vector<Voxel>& voxels) override {
     this->occupy(voxels);
     if (voxels.empty()) return;
-    for (const Voxel& shift : this->imageShifts(voxels))
-      lowerTowards(shift == Voxel{} ? voxels : shifted(voxels, shift));
+    for (const Voxel& shift : this->imageShifts(voxels)) {
+      if (shift == Voxel{})
+        lowerTowards(voxels);
+      else
+        lowerTowards(shifted(voxels, shift));
+    }
   }
 
 private:

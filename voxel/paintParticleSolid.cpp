@@ -84,15 +84,22 @@ int wrap(double x, int n) {
 // The background residual laid into 3D. A projection cannot map a torus onto the photo, so in a
 // periodic volume each voxel within kFadeBand voxels of a face mixes the residual at its position
 // with the residual at its image across that face, half and half at the face itself: both sides of
-// the face then read the same mix. Mixing independent noise lowers its contrast, so the mix is
-// divided by the root of the summed squared weights (variance-preserving blending).
+// the face then read the same mix. Mixing independent grain lowers its contrast, so the mix of the
+// residual less its mean is divided by the root of the summed squared weights (variance-preserving
+// blending). The mean, alike at every lookup, is added back as is: divided too, it would brighten
+// or darken the faces, most of all the corners, where eight lookups mix.
 class BackgroundResidual {
 public:
   BackgroundResidual(const cv::Mat& residual, const Projection& projection, Dims dims, bool periodic)
-      : residual_(residual), projection_(projection), dims_(dims), periodic_(periodic) {}
+      : residual_(residual), projection_(projection), dims_(dims), periodic_(periodic) {
+    if (!periodic) return;
+    const cv::Scalar mean = cv::mean(residual);
+    mean_ = cv::Vec3f(float(mean[0]), float(mean[1]), float(mean[2]));
+    centred_ = residual - mean;
+  }
 
   cv::Vec3f at(int x, int y, int z) const {
-    if (!periodic_) return lookup(Eigen::Vector3d(x, y, z));
+    if (!periodic_) return lookup(residual_, Eigen::Vector3d(x, y, z));
     std::array<Fade, 3> fades{fadeOf(x, dims_.x), fadeOf(y, dims_.y), fadeOf(z, dims_.z)};
     cv::Vec3f sum(0, 0, 0);
     double squares = 0;
@@ -106,10 +113,10 @@ public:
         if (across) p[a] += fades[std::size_t(a)].shift;
       }
       if (weight <= 0) continue;
-      sum += lookup(p) * float(weight);
+      sum += lookup(centred_, p) * float(weight);
       squares += weight * weight;
     }
-    return sum / float(std::sqrt(squares));
+    return mean_ + sum / float(std::sqrt(squares));
   }
 
 private:
@@ -129,12 +136,14 @@ private:
     return {};
   }
 
-  cv::Vec3f lookup(const Eigen::Vector3d& p) const {
-    return residual_.at<cv::Vec3f>(wrap(p.dot(projection_.v), residual_.rows),
-                                   wrap(p.dot(projection_.u), residual_.cols));
+  cv::Vec3f lookup(const cv::Mat& image, const Eigen::Vector3d& p) const {
+    return image.at<cv::Vec3f>(wrap(p.dot(projection_.v), image.rows),
+                               wrap(p.dot(projection_.u), image.cols));
   }
 
   const cv::Mat& residual_;
+  cv::Vec3f mean_;   ///< periodic: the residual's mean
+  cv::Mat centred_;  ///< periodic: the residual less its mean
   Projection projection_;
   Dims dims_;
   bool periodic_;
