@@ -29,45 +29,24 @@ for exemplar in "$@"; do
     rm -rf "$out/npy"
     /usr/bin/time -f "%e" -o "$out/time" "$bin" synthesize "$exemplar" -o "$out/v.vdb" --size "$size" \
       --seed "$seed" --report "$out/r.json" --npy "$out/npy" --quiet --no-quality "${flag[@]}" > /dev/null
-    python3 - "$out" "$name" "$periodic" "$(cat "$out/time")" <<'PY'
-import array, ast, json, math, os, sys
+    /usr/bin/python3 - "$out" "$name" "$periodic" "$(cat "$out/time")" <<'PY'
+import json, os, sys
+import numpy as np
 folder, name, periodic, wall = sys.argv[1:5]
 path = os.path.join(folder, "npy", "color.npy")
 if not os.path.exists(path):
     path = os.path.join(folder, "npy", "density.npy")
-with open(path, "rb") as f:
-    raw = f.read()
-header_len = int.from_bytes(raw[8:10], "little")
-header = ast.literal_eval(raw[10:10 + header_len].decode())
-shape = header["shape"]
-values = array.array("f")
-values.frombytes(raw[10 + header_len:])
-nz, ny, nx = shape[:3]
-c = shape[3] if len(shape) > 3 else 1
-dims = (nx, ny, nz)
-
-def value(x, y, z):
-    i = ((z * ny + y) * nx + x) * c
-    return values[i:i + c]
-
+v = np.load(path).astype(np.float64)  # (Z, Y, X[, C])
+if v.ndim == 3:
+    v = v[..., None]
 interior, wrap = [], []
-for axis in range(3):
-    n = dims[axis]
-    others = [a for a in range(3) if a != axis]
-    for layer in range(n):
-        total = 0.0
-        for j in range(dims[others[1]]):
-            for i in range(dims[others[0]]):
-                p = [0, 0, 0]
-                p[axis], p[others[0]], p[others[1]] = layer, i, j
-                q = list(p)
-                q[axis] = (layer + 1) % n
-                a, b = value(*p), value(*q)
-                total += sum((a[k] - b[k]) ** 2 for k in range(c))
-        mean = total / (dims[others[0]] * dims[others[1]])
-        (interior if layer + 1 < n else wrap).append(mean)
-m = sum(interior) / len(interior)
-sd = math.sqrt(sum((v - m) ** 2 for v in interior) / (len(interior) - 1))
+for axis in (2, 1, 0):  # x, y, z
+    # plane between layer l and l + 1 (the last: layer N-1 against layer 0, where copies meet)
+    step = (np.roll(v, -1, axis=axis) - v) ** 2
+    planes = step.sum(axis=3).mean(axis=tuple(a for a in range(3) if a != axis))
+    interior.extend(planes[:-1])
+    wrap.append(planes[-1])
+m, sd = float(np.mean(interior)), float(np.std(interior, ddof=1))
 r = json.load(open(os.path.join(folder, "r.json")))
 synthesis = r["seconds"] - r["analysis_seconds"]
 print(f"| {name} | {periodic} | {float(wall):.1f} | {synthesis:.1f} | {m:.5f} ({sd:.5f}) | "
