@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config clang-format
-  libopencv-dev
+  libopencv-dev libopencv-contrib-dev
   libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools libtiff-dev

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/detail/otsu.h"
 #include "segmentation/detail/shape.h"
 #include "segmentation/detail/splitParticles.h"
 
@@ -13,6 +14,8 @@ namespace solidtex::detail {
 namespace {
 
 constexpr double kDecisionPixels = 512.0 * 512.0;
+constexpr double kMinToneShare = 0.05;   // each tone at least this share of the photo
+constexpr double kClassSmoothing = 1.5;  // pixels: Gaussian sigma before the three classes
 
 // Pixels of one body times its solidity.
 double solidPixels(const cv::Mat& labels, int label, const cv::Rect& box, double minArea) {
@@ -50,6 +53,25 @@ bool upperIsBackground(const cv::Mat& upper, double minArea) {
   small = small >= 128;
   const double smallMinArea = minArea / double(factor * factor);
   return compactness(small, smallMinArea) < compactness(small == 0, smallMinArea);
+}
+
+double solidShare(const cv::Mat& particles, double minArea) {
+  return compactness(particles, minArea) * cv::countNonZero(particles) / double(particles.total());
+}
+
+cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea) {
+  CV_Assert(lightness.type() == CV_32FC1);
+  cv::Mat smooth;
+  cv::GaussianBlur(lightness, smooth, {0, 0}, kClassSmoothing, kClassSmoothing, cv::BORDER_REFLECT);
+  const OtsuThreeClasses split = otsuThreeClasses(smooth);
+  const cv::Mat low = smooth <= split.lower, high = smooth > split.upper;
+  const double fewest = std::min(cv::countNonZero(low), cv::countNonZero(high));
+  if (fewest < kMinToneShare * double(lightness.total())) return {};
+  const cv::Mat middle = ~(low | high);
+  const double middleCompactness = compactness(middle, minArea);
+  if (middleCompactness >= compactness(low, minArea) || middleCompactness >= compactness(high, minArea))
+    return {};
+  return middle;
 }
 
 }  // namespace solidtex::detail

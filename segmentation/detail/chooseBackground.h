@@ -16,4 +16,16 @@ double compactness(const cv::Mat& classMask, double minArea);
 // packed gravel grains, which break into ragged pieces).
 bool upperIsBackground(const cv::Mat& upper, double minArea);
 
+// Pixels of compact bodies in a particle mask, as a share of all pixels: compactness times the
+// mask's share. Of two readings of a photo, the one whose particles cover more of it in compact
+// bodies is the likelier.
+double solidShare(const cv::Mat& particles, double minArea);
+
+// The middle of three classes by lightness (Otsu's two thresholds on `lightness`, CV_32F, smoothed
+// first so the grain of a textured matrix does not scatter into the outer classes), returned
+// (CV_8U, 255 on it) when it is less compact than both outer ones and each outer one holds a fair
+// share of the photo: the matrix between particles of two tones, lighter and darker than it
+// (light and dark pebbles in grey mortar). Empty otherwise.
+cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea);
+
 }  // namespace solidtex::detail

@@ -44,11 +44,15 @@ cv::Mat gradientMagnitude(const cv::Mat& image) {
 }  // namespace
 
 cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split) {
-  CV_Assert(distance.type() == CV_32FC1);
+  return backgroundByEdges(distance, distance > split.threshold, split.threshold);
+}
+
+cv::Mat backgroundByEdges(const cv::Mat& distance, const cv::Mat& particleSeeds, float threshold) {
+  CV_Assert(distance.type() == CV_32FC1 && particleSeeds.type() == CV_8UC1);
   enum : uchar { kUndecided = 0, kBackground = 1, kParticle = 2 };
   cv::Mat markers(distance.size(), CV_8UC1, cv::Scalar(kUndecided));
-  markers.setTo(kBackground, distance <= backgroundReach(distance, split.threshold));
-  markers.setTo(kParticle, distance > split.threshold);
+  markers.setTo(kBackground, distance <= backgroundReach(distance, threshold));
+  markers.setTo(kParticle, particleSeeds);
   return markerWatershed(markers, gradientMagnitude(distance)) == kBackground;
 }
 

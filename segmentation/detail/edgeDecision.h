@@ -12,4 +12,9 @@ namespace solidtex::detail {
 // them first through the distance's gradient, so the border settles on the visible edge.
 cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split);
 
+// The same with the particle seeds given (CV_8U, non-zero on pixels surely particle) and the
+// background's spread measured below `threshold`: for photos whose particles lie on both sides of
+// the background's colour, each side with a threshold of its own.
+cv::Mat backgroundByEdges(const cv::Mat& distance, const cv::Mat& particleSeeds, float threshold);
+
 }  // namespace solidtex::detail

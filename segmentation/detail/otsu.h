@@ -15,4 +15,12 @@ struct OtsuSplit {
 // (specular highlights, dead pixels) cannot squeeze the useful range into a few bins.
 OtsuSplit otsu(const cv::Mat& values, const cv::Mat& mask = {});
 
+struct OtsuThreeClasses {
+  float lower = 0, upper = 0;  // classes: <= lower, (lower, upper], > upper
+  double separability = 0;     // between-class / total variance, 0 when undefined
+};
+
+// Otsu's criterion with two thresholds (three classes), on the same robust histogram as otsu().
+OtsuThreeClasses otsuThreeClasses(const cv::Mat& values, const cv::Mat& mask = {});
+
 }  // namespace solidtex::detail

@@ -1,8 +1,10 @@
 #include "segmentation/detail/separateBackground.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -16,15 +18,19 @@
 namespace solidtex::detail {
 namespace {
 
-constexpr double kMinSpread = 1.0;    // Lab units: a feature flatter than this carries no classes
-constexpr double kMinContrast = 5.0;  // Delta E between the class means: below it, no visible classes
-constexpr int kChroma = 3;            // feature index after L, a, b
+constexpr double kMinSpread = 1.0;     // Lab units: a feature flatter than this carries no classes
+constexpr double kMinContrast = 5.0;   // Delta E between the class means: below it, no visible classes
+constexpr int kChroma = 3;             // feature index after L, a, b
+constexpr double kClearlyMore = 1.25;  // the two-tone reading's solid share over the one-tone's
+constexpr double kGrainSigma = 1.0;    // pixels: the window of the matrix's grain
+constexpr float kGrainWeight = 3.0f;   // Delta E per unit of L* spread smoother than the matrix
 
 // The feature that separates the classes best, and on which side of it the background lies.
 struct Axis {
   int feature = -1;  // 0..2: L, a, b; kChroma: chroma
   float threshold = 0;
   bool backgroundAbove = false;
+  bool twoSided = false;  // particles lie on both sides of the background along the feature
   bool valid() const { return feature >= 0; }
 };
 
@@ -85,11 +91,17 @@ void clampBeyondBackground(cv::Mat& lab, const Axis& axis, const cv::Scalar& mea
 // Colour distance (CIE76 Delta E) of every pixel from the background colour, after evening out
 // the lighting; this catches particles of any hue (green candies are as bright as the paper,
 // brown ones as unsaturated), which no single feature does.
-cv::Mat backgroundDistance(const cv::Mat& lab, const Axis& axis, const cv::Mat& background) {
+// `above`, when given, receives the pixels beyond the background's mean along the axis.
+cv::Mat backgroundDistance(const cv::Mat& lab, const Axis& axis, const cv::Mat& background,
+                           cv::Mat* above = nullptr) {
   const cv::Mat core = interior(background);
   cv::Mat flat = flattenShading(lab, core);
   const cv::Scalar mean = cv::mean(flat, core);
-  clampBeyondBackground(flat, axis, mean);
+  if (above) {
+    cv::extractChannel(flat, *above, axis.feature);
+    *above = *above > mean[axis.feature];
+  }
+  if (!axis.twoSided) clampBeyondBackground(flat, axis, mean);
   cv::Mat diff, distance;
   cv::subtract(flat, mean, diff);
   cv::multiply(diff, diff, diff);
@@ -98,6 +110,75 @@ cv::Mat backgroundDistance(const cv::Mat& lab, const Axis& axis, const cv::Mat& 
   // A 3x3 median removes sensor noise without moving edges or erasing thin spots.
   cv::medianBlur(distance, distance, 3);
   return distance;
+}
+
+// Background (255) by one threshold on the colour distance; empty when there is no clear contrast.
+cv::Mat oneSidedBackground(const cv::Mat& lab, const Axis& axis, const cv::Mat& firstGuess) {
+  // The first guess came from one feature; re-estimate the background from the colour distance
+  // once, then decide with the help of edges.
+  cv::Mat distance = backgroundDistance(lab, axis, firstGuess);
+  OtsuSplit split = otsu(distance);
+  distance = backgroundDistance(lab, axis, distance <= split.threshold);
+  split = otsu(distance);
+  if (split.upperMean - split.lowerMean < kMinContrast) return {};
+  return backgroundByEdges(distance, split);
+}
+
+// The spread of lightness within a few pixels of each pixel: the grain of sand or mortar.
+cv::Mat localSpread(const cv::Mat& lab) {
+  cv::Mat lightness, mean, meanSq, spread;
+  cv::extractChannel(lab, lightness, 0);
+  cv::GaussianBlur(lightness, mean, {0, 0}, kGrainSigma);
+  cv::GaussianBlur(lightness.mul(lightness), meanSq, {0, 0}, kGrainSigma);
+  cv::sqrt(cv::max(meanSq - mean.mul(mean), 0), spread);
+  return spread;
+}
+
+// A matrix of sand or mortar is grainier than the smooth particles set in it, even where a
+// particle's shaded side takes the matrix's colour: being smoother than the matrix's typical grain
+// adds to the distance, kGrainWeight Delta E per unit of lightness spread.
+void addSmoothness(cv::Mat& distance, const cv::Mat& grain, const cv::Mat& background) {
+  std::vector<float> values;
+  for (int y = 0; y < grain.rows; ++y)
+    for (int x = 0; x < grain.cols; ++x)
+      if (background.at<uchar>(y, x)) values.push_back(grain.at<float>(y, x));
+  if (values.empty()) return;
+  const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  cv::Mat smoother = cv::max(float(*mid) - grain, 0) * kGrainWeight;
+  cv::sqrt(distance.mul(distance) + smoother.mul(smoother), distance);
+}
+
+// The background of particles lighter and darker than it: on each side of the background's
+// lightness the colour distance has a threshold of its own, since one tone lies further from the
+// matrix than the other. `middle` is the first guess.
+cv::Mat twoSidedBackground(const cv::Mat& lab, const cv::Mat& middle) {
+  const Axis lightness{0, 0, false, true};
+  const cv::Mat grain = localSpread(lab);
+  cv::Mat background = middle, distance, above, seeds;
+  float lowest = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    distance = backgroundDistance(lab, lightness, background, &above);
+    addSmoothness(distance, grain, background);
+    const OtsuSplit lighter = otsu(distance, above), darker = otsu(distance, ~above);
+    const auto seedsOf = [&](const OtsuSplit& split, const cv::Mat& side) {
+      if (split.upperMean - split.lowerMean < kMinContrast)
+        return cv::Mat(cv::Mat::zeros(side.size(), CV_8U));
+      return cv::Mat(side & (distance > split.threshold));
+    };
+    seeds = seedsOf(lighter, above) | seedsOf(darker, ~above);
+    background = ~seeds;
+    lowest = std::min(lighter.threshold, darker.threshold);
+  }
+  if (cv::countNonZero(seeds) == 0) return {};
+  return backgroundByEdges(distance, seeds, lowest);
+}
+
+cv::Mat particlesFrom(const cv::Mat& background, double minArea, bool invert) {
+  cv::Mat particles = invert ? background : cv::Mat(background == 0);
+  removeSmallComponents(particles, minArea);
+  fillSmallHoles(particles, minArea);
+  return particles;
 }
 
 }  // namespace
@@ -111,19 +192,22 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
   if (!axis.valid()) return none;
   const cv::Mat upper = f[std::size_t(axis.feature)] > axis.threshold;
   axis.backgroundAbove = upperIsBackground(upper, minArea);
+  const cv::Mat background =
+      oneSidedBackground(lab, axis, axis.backgroundAbove ? upper : cv::Mat(upper == 0));
+  cv::Mat particles = background.empty() ? none : particlesFrom(background, minArea, invert);
 
-  // The first guess came from one feature; re-estimate the background from the colour distance
-  // once, then decide with the help of edges.
-  cv::Mat distance = backgroundDistance(lab, axis, axis.backgroundAbove ? upper : cv::Mat(upper == 0));
-  OtsuSplit split = otsu(distance);
-  distance = backgroundDistance(lab, axis, distance <= split.threshold);
-  split = otsu(distance);
-  if (split.upperMean - split.lowerMean < kMinContrast) return none;
-  const cv::Mat background = backgroundByEdges(distance, split);
-
-  cv::Mat particles = invert ? background : cv::Mat(background == 0);
-  removeSmallComponents(particles, minArea);
-  fillSmallHoles(particles, minArea);
+  // Particles of two tones, one lighter and one darker than the matrix between them: one threshold
+  // finds one tone only. Where the lightness shows three such classes, the two-tone reading wins
+  // when its particles cover clearly more of the photo in compact bodies (a quarter more: the
+  // rosettes of a leopard's coat read either way, and one threshold reads them as they look).
+  const cv::Mat middle = middleLightnessClass(f[0], minArea);
+  if (middle.empty()) return particles;
+  const cv::Mat twoSided = twoSidedBackground(lab, middle);
+  if (twoSided.empty()) return particles;
+  cv::Mat alternative = particlesFrom(twoSided, minArea, invert);
+  if (solidShare(invert ? ~alternative : alternative, minArea) >
+      kClearlyMore * solidShare(invert ? ~particles : particles, minArea))
+    return alternative;
   return particles;
 }
 
