@@ -19,6 +19,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto sizing = std::make_shared<std::string>("sections");
   auto arrangement = std::make_shared<std::string>("uniform");
   auto boundary = std::make_shared<std::string>("open");
+  auto matrix = std::make_shared<std::string>("synthesized");
   CLI::App* command =
       app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
@@ -57,6 +58,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
           "The volume tiles without seams: particles leaving by a face come back by the opposite one "
           "(--boundary periodic)")
       ->excludes(boundaryOption);
+  command
+      ->add_option("--matrix", *matrix,
+                   "The background between the particles: synthesized (a solid texture grown from the "
+                   "photo's background, its particles filled) or projected (the paper's)")
+      ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")
       ->capture_default_str();
   auto smoothing = std::make_shared<std::string>("auto");
@@ -81,12 +87,13 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
       "an object per particle)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
-  return [job, size, dims, placer, sizing, arrangement, boundary, smoothing, threads] {
+  return [job, size, dims, placer, sizing, arrangement, boundary, matrix, smoothing, threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
     job->placer = parsePlacerKind(*placer);
     job->sizing = parseSizing(*sizing);
     job->arrangement = parseArrangement(*arrangement);
     job->boundary = parseBoundary(*boundary);
+    job->matrix = parseMatrixTexture(*matrix);
     job->smoothing = parseSmoothing(*smoothing);
     const ThreadLimit limit(*threads);
     const auto report = runParticleSolid(*job);

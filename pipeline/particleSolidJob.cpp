@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <numeric>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -21,6 +22,7 @@
 #include "placement/placeLargestFirst.h"
 #include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
+#include "synthesis/synthesizeMatrix.h"
 #include "voxel/paintParticleSolid.h"
 #include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
@@ -130,6 +132,16 @@ Boundary parseBoundary(const std::string& name) {
   throw OptionError("unknown boundary '" + name + "': use open, walls or periodic");
 }
 
+MatrixTexture parseMatrixTexture(const std::string& name) {
+  if (name == "synthesized") return MatrixTexture::Synthesized;
+  if (name == "projected") return MatrixTexture::Projected;
+  throw OptionError("unknown matrix texture '" + name + "': use synthesized or projected");
+}
+
+const char* matrixTextureName(MatrixTexture matrix) {
+  return matrix == MatrixTexture::Synthesized ? "synthesized" : "projected";
+}
+
 const char* boundaryName(Boundary boundary) {
   switch (boundary) {
     case Boundary::Open:
@@ -161,6 +173,39 @@ double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims) {
 
 float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
   return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
+}
+
+constexpr int kMatrixBlock = 64;     // largest edge of the synthesised matrix block, tiled over the volume
+constexpr int kMinMatrixBlock = 16;  // below it the synthesis has no room for its levels
+
+// The block's edge: a multiple of 4 (the synthesis' levels), no larger than the volume needs, and
+// in a periodic volume a divisor of every side, so that the tiling wraps with the volume. 0: none.
+int matrixBlock(const Dims& dims, bool periodic) {
+  if (!periodic) return std::min(kMatrixBlock, (std::max({dims.x, dims.y, dims.z}) + 3) / 4 * 4);
+  const int common = std::gcd(dims.x, std::gcd(dims.y, dims.z));
+  for (int block = kMatrixBlock; block >= kMinMatrixBlock; block -= 4)
+    if (common % block == 0) return block;
+  return 0;
+}
+
+// The synthesised matrix, or none (projection) with the reason in the report.
+std::optional<TiledMatrix> makeMatrix(const ParticleSolidJob& job, const ExemplarStats& stats, double scale,
+                                      nlohmann::json& report) {
+  report = {{"texture", matrixTextureName(job.matrix)}};
+  if (job.matrix == MatrixTexture::Projected) return std::nullopt;
+  const int block = matrixBlock(job.dims, job.boundary == Boundary::Periodic);
+  if (block < kMinMatrixBlock) {
+    report = {{"texture", "projected"},
+              {"reason", "no block of 16 to 64 voxels, a multiple of 4, tiles this volume"}};
+    return std::nullopt;
+  }
+  std::optional<TiledMatrix> matrix =
+      synthesizeMatrix(stats, {block, scale, deriveSeed(job.seed, 0x3A7B1C), 0});
+  if (!matrix)
+    report = {{"texture", "projected"}, {"reason", "the photo shows too little matrix to learn its texture"}};
+  else
+    report["block"] = block;
+  return matrix;
 }
 
 constexpr int kSizingBootstraps = 8;  // a range of the size factor, at a fraction of the fit's time
@@ -245,6 +290,11 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   field.reset();  // its memory goes to the colour and the .vdb's grids
   progress.done();
 
+  timer.start("matrix");
+  progress.update("synthesizing the matrix");
+  nlohmann::json matrixReport;
+  const std::optional<TiledMatrix> matrix = makeMatrix(job, stats, scale, matrixReport);
+
   timer.start("color");
   progress.update("painting the particles");
   std::vector<ParticlePaint> paints;
@@ -254,8 +304,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                       {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
                        placed.origin.z + placed.box.z * 0.5},
                       placed.voxelsPerPixel});
-  SolidVolume volume =
-      paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed, periodic);
+  SolidVolume volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale,
+                                          job.seed, periodic, matrix ? &*matrix : nullptr);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   std::vector<ParticleMesh> meshes;
@@ -283,6 +333,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"sizing", sizingName(job.sizing)},
                            {"arrangement", arrangementName(job.arrangement)},
                            {"boundary", boundaryName(job.boundary)},
+                           {"matrix", matrixReport},
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},

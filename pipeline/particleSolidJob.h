@@ -26,6 +26,16 @@ enum class Boundary {
 Boundary parseBoundary(const std::string& name);
 const char* boundaryName(Boundary boundary);
 
+/// How the background between the particles (the matrix) is coloured.
+enum class MatrixTexture {
+  Synthesized,  ///< a periodic solid texture grown from the photo's matrix (chen-wang), tiled
+  Projected,    ///< the paper's: the photo's background residual projected along one direction
+};
+
+/// "synthesized" | "projected"; throws OptionError otherwise.
+MatrixTexture parseMatrixTexture(const std::string& name);
+const char* matrixTextureName(MatrixTexture matrix);
+
 /// `solidtex particles`: photo to particle solid (.vdb, report, previews).
 struct ParticleSolidJob {
   std::string photo;
@@ -38,6 +48,7 @@ struct ParticleSolidJob {
   Sizing sizing = Sizing::Sections;
   Arrangement arrangement = Arrangement::Uniform;
   Boundary boundary = Boundary::Open;
+  MatrixTexture matrix = MatrixTexture::Synthesized;
   ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
   std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;

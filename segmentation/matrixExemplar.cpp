@@ -1,6 +1,7 @@
 #include "segmentation/matrixExemplar.h"
 
 #include <algorithm>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/xphoto.hpp>
@@ -58,10 +59,19 @@ cv::Mat matrixExemplar(const ExemplarStats& stats, const MatrixExemplarOptions& 
   linear.setTo(0, known == 0);
   cv::Mat lab8 = toLab8(cv::max(linear, 0.0)), filled;
   cv::xphoto::inpaint(lab8, known, filled, cv::xphoto::INPAINT_SHIFTMAP);
-  // Shift-map can leave a few hole pixels unreached, still black (Lab 0, 128, 128 in 8 bits); those
-  // take the colours around them.
-  cv::Mat unreached;
-  cv::inRange(filled, cv::Scalar(0, 128, 128), cv::Scalar(0, 128, 128), unreached);
+  // Shift-map leaves some pixels unwritten (Lab 0, 0, 0 in 8 bits), known ones among them: the
+  // known pixels are put back, and a filled pixel outside the range of the known ones takes the
+  // colours around it instead.
+  lab8.copyTo(filled, known);
+  std::vector<cv::Mat> known3, filled3;
+  cv::split(lab8, known3);
+  cv::split(filled, filled3);
+  cv::Mat unreached = cv::Mat::zeros(known.size(), CV_8U);
+  for (int c = 0; c < 3; ++c) {
+    double lo, hi;
+    cv::minMaxLoc(known3[std::size_t(c)], &lo, &hi, nullptr, nullptr, known);
+    unreached |= (filled3[std::size_t(c)] < lo) | (filled3[std::size_t(c)] > hi);
+  }
   unreached &= (known == 0);
   if (cv::countNonZero(unreached) > 0) cv::inpaint(filled, unreached, filled, 3, cv::INPAINT_TELEA);
   return fromLab8(filled);

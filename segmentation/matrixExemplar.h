@@ -10,7 +10,7 @@ namespace solidtex {
 
 /// Options of matrixExemplar.
 struct MatrixExemplarOptions {
-  int maxSide = 128;             ///< pixels: the square window of the photo the exemplar is cut from
+  int maxSide = 64;              ///< pixels: the square window of the photo the exemplar is cut from
   int rim = 2;                   ///< pixels around each particle filled too: its shadow and blur
   double minMatrixShare = 0.25;  ///< less matrix than this in the window: no exemplar
 };

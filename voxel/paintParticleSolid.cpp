@@ -163,7 +163,7 @@ Eigen::Vector3d offsetFrom(const std::array<double, 3>& c, const Eigen::Vector3d
 
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic) {
+                               std::uint64_t seed, bool periodic, const TiledMatrix* matrix) {
   SolidVolume volume;
   volume.dims = dims;
   volume.particleId = std::move(ids);
@@ -176,8 +176,8 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
   projections.reserve(particles.size());
   for (const ParticlePaint& particle : particles)
     projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
-  const cv::Mat filled = fillParticleHoles(stats);
-  const BackgroundResidual backgroundResidual(filled, background, dims, periodic);
+  const cv::Mat filled = matrix ? cv::Mat() : fillParticleHoles(stats);
+  const BackgroundResidual backgroundResidual(filled, background, dims, periodic && !matrix);
 
   tbb::parallel_for(0, dims.z, [&](int z) {
     for (int y = 0; y < dims.y; ++y)
@@ -186,7 +186,9 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
         const std::int32_t id = volume.particleId[idx];
         const Eigen::Vector3d p(x, y, z);
         if (id == 0) {
-          volume.color[idx] = clamp01(stats.backgroundColor + backgroundResidual.at(x, y, z));
+          volume.color[idx] = matrix ? matrix->color[matrix->dims.index(
+                                           x % matrix->dims.x, y % matrix->dims.y, z % matrix->dims.z)]
+                                     : clamp01(stats.backgroundColor + backgroundResidual.at(x, y, z));
           continue;
         }
         const ParticlePaint& particle = particles[std::size_t(id - 1)];

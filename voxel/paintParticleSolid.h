@@ -15,6 +15,13 @@ struct ParticlePaint {
   double voxelsPerPixel = 1;       ///< the scale its shape was made at
 };
 
+/// A block of background colours that tiles seamlessly (a periodic solid texture of the photo's
+/// matrix), laid over the whole volume by repeating it along every axis.
+struct TiledMatrix {
+  Dims dims;               ///< the block's size
+  std::vector<Rgb> color;  ///< dims.count(), linear RGB in [0,1], x fastest
+};
+
 /// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
 /// colour plus that particle's own residual, each background voxel the background mean plus the
 /// background residual. Residuals are laid into 3D by parallel projection along an oblique
@@ -26,8 +33,12 @@ struct ParticlePaint {
 /// A periodic volume (a 3D torus) is painted to tile: a particle's residual follows it across the
 /// faces, and the background's is cross-faded near each face with its continuation from the
 /// opposite one, its variance kept.
+/// With a `matrix`, each background voxel takes the matrix's colour instead (tiled, so a volume
+/// whose sides are multiples of the block's stays periodic): the background then has the photo's
+/// matrix texture in every direction, where a projection draws streaks along its direction.
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic = false);
+                               std::uint64_t seed, bool periodic = false,
+                               const TiledMatrix* matrix = nullptr);
 
 }  // namespace solidtex
