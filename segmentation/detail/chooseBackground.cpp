@@ -43,20 +43,35 @@ double compactness(const cv::Mat& classMask, double minArea) {
   return solid / total;
 }
 
-bool upperIsBackground(const cv::Mat& upper, double minArea) {
-  // A judgement on the whole photo: a copy of about a quarter megapixel shows the same bodies,
-  // and cutting both classes of a large photo into bodies would cost seconds.
-  const int factor = int(std::ceil(std::sqrt(double(upper.total()) / kDecisionPixels)));
-  if (factor <= 1) return compactness(upper, minArea) < compactness(upper == 0, minArea);
+namespace {
+
+// Judgements on the whole photo are made on a copy of about a quarter megapixel: it shows the same
+// bodies, and cutting the classes of a large photo into bodies would cost seconds.
+int decisionFactor(const cv::Mat& image) {
+  return std::max(1, int(std::ceil(std::sqrt(double(image.total()) / kDecisionPixels))));
+}
+
+cv::Mat forDecision(const cv::Mat& image, int factor) {
+  if (factor <= 1) return image;
   cv::Mat small;
-  cv::resize(upper, small, cv::Size(upper.cols / factor, upper.rows / factor), 0, 0, cv::INTER_AREA);
-  small = small >= 128;
+  cv::resize(image, small, cv::Size(image.cols / factor, image.rows / factor), 0, 0, cv::INTER_AREA);
+  return image.type() == CV_8UC1 ? cv::Mat(small >= 128) : small;
+}
+
+}  // namespace
+
+bool upperIsBackground(const cv::Mat& upper, double minArea) {
+  const int factor = decisionFactor(upper);
+  const cv::Mat small = forDecision(upper, factor);
   const double smallMinArea = minArea / double(factor * factor);
   return compactness(small, smallMinArea) < compactness(small == 0, smallMinArea);
 }
 
 double solidShare(const cv::Mat& particles, double minArea) {
-  return compactness(particles, minArea) * cv::countNonZero(particles) / double(particles.total());
+  const int factor = decisionFactor(particles);
+  const cv::Mat small = forDecision(particles, factor);
+  return compactness(small, minArea / double(factor * factor)) * cv::countNonZero(small) /
+         double(small.total());
 }
 
 cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea) {
@@ -68,9 +83,13 @@ cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea) {
   const double fewest = std::min(cv::countNonZero(low), cv::countNonZero(high));
   if (fewest < kMinToneShare * double(lightness.total())) return {};
   const cv::Mat middle = ~(low | high);
-  const double middleCompactness = compactness(middle, minArea);
-  if (middleCompactness >= compactness(low, minArea) || middleCompactness >= compactness(high, minArea))
-    return {};
+  const int factor = decisionFactor(middle);
+  const double smallMinArea = minArea / double(factor * factor);
+  const auto compact = [&](const cv::Mat& mask) {
+    return compactness(forDecision(mask, factor), smallMinArea);
+  };
+  const double middleCompactness = compact(middle);
+  if (middleCompactness >= compact(low) || middleCompactness >= compact(high)) return {};
   return middle;
 }
 

@@ -22,6 +22,7 @@ constexpr double kMinSpread = 1.0;     // Lab units: a feature flatter than this
 constexpr double kMinContrast = 5.0;   // Delta E between the class means: below it, no visible classes
 constexpr int kChroma = 3;             // feature index after L, a, b
 constexpr double kClearlyMore = 1.25;  // the two-tone reading's solid share over the one-tone's
+constexpr double kMaxGapShare = 0.35;  // the gaps of a pile are the smaller, darker class
 constexpr double kGrainSigma = 1.0;    // pixels: the window of the matrix's grain
 constexpr float kGrainWeight = 3.0f;   // Delta E per unit of L* spread smoother than the matrix
 
@@ -196,19 +197,32 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
       oneSidedBackground(lab, axis, axis.backgroundAbove ? upper : cv::Mat(upper == 0));
   cv::Mat particles = background.empty() ? none : particlesFrom(background, minArea, invert);
 
-  // Particles of two tones, one lighter and one darker than the matrix between them: one threshold
-  // finds one tone only. Where the lightness shows three such classes, the two-tone reading wins
-  // when its particles cover clearly more of the photo in compact bodies (a quarter more: the
-  // rosettes of a leopard's coat read either way, and one threshold reads them as they look).
-  const cv::Mat middle = middleLightnessClass(f[0], minArea);
-  if (middle.empty()) return particles;
-  const cv::Mat twoSided = twoSidedBackground(lab, middle);
-  if (twoSided.empty()) return particles;
-  cv::Mat alternative = particlesFrom(twoSided, minArea, invert);
-  if (solidShare(invert ? ~alternative : alternative, minArea) >
-      kClearlyMore * solidShare(invert ? ~particles : particles, minArea))
-    return alternative;
-  return particles;
+  // Two other readings, for photos the clearest feature misreads:
+  // - particles of two tones, one lighter and one darker than the matrix between them (pebbles in
+  //   mortar), where one threshold finds one tone only;
+  // - a pile of particles of many colours (beach shingle), where the clearest feature splits the
+  //   particles by colour and only the dark gaps between them are background.
+  // Another reading wins when its particles cover clearly more of the photo in compact bodies
+  // (a quarter more: the rosettes of a leopard's coat read either way, and the first reading
+  // reads them as they look).
+  std::vector<cv::Mat> others;
+  if (const cv::Mat middle = middleLightnessClass(f[0], minArea); !middle.empty())
+    others.push_back(twoSidedBackground(lab, middle));
+  if (axis.feature != 0 || axis.backgroundAbove) {
+    const Axis darkGaps{0, otsu(f[0]).threshold, false};
+    const cv::Mat gaps = f[0] <= darkGaps.threshold;
+    if (cv::countNonZero(gaps) <= kMaxGapShare * double(gaps.total()))
+      others.push_back(oneSidedBackground(lab, darkGaps, gaps));
+  }
+  double best = kClearlyMore * solidShare(invert ? ~particles : particles, minArea);
+  cv::Mat chosen = particles;
+  for (const cv::Mat& other : others) {
+    if (other.empty()) continue;
+    cv::Mat alternative = particlesFrom(other, minArea, invert);
+    const double share = solidShare(invert ? ~alternative : alternative, minArea);
+    if (share > best) best = share, chosen = alternative;
+  }
+  return chosen;
 }
 
 }  // namespace solidtex::detail
