@@ -58,6 +58,7 @@ cv::Mat matrixExemplar(const ExemplarStats& stats, const MatrixExemplarOptions& 
                    cv::Scalar(stats.backgroundColor[0], stats.backgroundColor[1], stats.backgroundColor[2]);
   linear.setTo(0, known == 0);
   cv::Mat lab8 = toLab8(cv::max(linear, 0.0)), filled;
+  if (cv::countNonZero(known) == window.area()) return fromLab8(lab8);  // xphoto fails on no hole
   cv::xphoto::inpaint(lab8, known, filled, cv::xphoto::INPAINT_SHIFTMAP);
   // Shift-map leaves some pixels unwritten (Lab 0, 0, 0 in 8 bits), known ones among them: the
   // known pixels are put back, and a filled pixel outside the range of the known ones takes the

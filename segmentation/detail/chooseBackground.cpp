@@ -29,6 +29,16 @@ double solidPixels(const cv::Mat& labels, int label, const cv::Rect& box, double
   return area * std::min(1.0, area / hullPixelArea(hullOf(points)));
 }
 
+// True when the pixels 3 to 5 pixels outside `region` lie more in `near` than in `far`. Nearer
+// pixels are left out: the blurred edge between two other classes passes through the middle one.
+bool mostlyBeside(const cv::Mat& region, const cv::Mat& near, const cv::Mat& far) {
+  cv::Mat inner, ring;
+  cv::dilate(region, inner, cv::getStructuringElement(cv::MORPH_ELLIPSE, {5, 5}));
+  cv::dilate(region, ring, cv::getStructuringElement(cv::MORPH_ELLIPSE, {11, 11}));
+  ring &= ~inner;
+  return cv::countNonZero(ring & near) > cv::countNonZero(ring & far);
+}
+
 }  // namespace
 
 double compactness(const cv::Mat& classMask, double minArea) {
@@ -90,6 +100,10 @@ cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea) {
   };
   const double middleCompactness = compact(middle);
   if (middleCompactness >= compact(low) || middleCompactness >= compact(high)) return {};
+  // The matrix lies between the tones: each tone's outline runs mostly along the middle class
+  // rather than along the other tone (orange and blue discs on a dark ground are one tone each
+  // side of blue, but the orange ones lie on the ground).
+  if (!mostlyBeside(low, middle, high) || !mostlyBeside(high, middle, low)) return {};
   return middle;
 }
 

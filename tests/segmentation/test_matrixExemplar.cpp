@@ -37,5 +37,22 @@ TEST(MatrixExemplar, FillsTheParticlesWithTheMatrixGrain) {
   EXPECT_TRUE(matrixExemplar(stats, tooMuch).empty());
 }
 
+// A window of matrix alone has nothing to fill (OpenCV's shift-map fails on a mask with no hole).
+TEST(MatrixExemplar, AWindowOfMatrixAloneIsKeptAsItIs) {
+  cv::Mat photo(120, 200, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
+  cv::RNG rng(5);
+  cv::Mat grain(photo.size(), CV_32FC3);
+  rng.fill(grain, cv::RNG::NORMAL, 0, 0.05);
+  photo += grain;
+  for (int i = 0; i < 6; ++i)
+    cv::circle(photo, {150 + (i % 2) * 25, 15 + i * 18}, 8, cv::Scalar(0.9, 0.2, 0.1), cv::FILLED);
+  cv::min(cv::max(photo, 0.0), 1.0, photo);
+  const ExemplarStats stats = analyzeExemplar(photo, "discs at the right", {});
+  const cv::Mat exemplar = matrixExemplar(stats);
+  ASSERT_EQ(exemplar.size(), cv::Size(64, 64));
+  cv::Scalar mean = cv::mean(exemplar);
+  EXPECT_NEAR(mean[0], mean[1], 0.02);
+}
+
 }  // namespace
 }  // namespace solidtex
