@@ -3,7 +3,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOLIDTEX_TESTS=OFF
+source scripts/compilerCache.sh
+cmake "${compiler_cache[@]}" -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOLIDTEX_TESTS=OFF
 cmake --build build -j"$(nproc)" --target solidtex
 mkdir -p out
 ./build/cli/solidtex particles data/particles/smarties.png -o out/smarties.vdb --size 128 \

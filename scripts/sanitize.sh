@@ -5,7 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
+source scripts/compilerCache.sh
+cmake "${compiler_cache[@]}" -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
   -DSOLIDTEX_TESTS=ON -DSOLIDTEX_STRICT=OFF -DSOLIDTEX_SANITIZE=address+undefined
 cmake --build build-asan -j"$(nproc)"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp" UBSAN_OPTIONS=print_stacktrace=1

@@ -2,7 +2,7 @@
 # Installs every Debian package solidtex needs. Idempotent: does nothing when all are present.
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config clang-format
+  build-essential cmake pkg-config clang-format ccache
   libopencv-dev libopencv-contrib-dev
   libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
   libcgal-dev libgmp-dev libmpfr-dev

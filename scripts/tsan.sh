@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+source scripts/compilerCache.sh
 tbb=$PWD/build-tsan/tbb
 if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   rm -rf "$tbb" && mkdir -p "$tbb/lists/partial" "$tbb/cache/archives/partial"
@@ -23,7 +24,7 @@ if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   cmake --build "$tbb/build" -j"$(nproc)"
   cmake --install "$tbb/build" >/dev/null
 fi
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
+cmake "${compiler_cache[@]}" -S . -B build-tsan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
   -DSOLIDTEX_TESTS=ON -DSOLIDTEX_STRICT=OFF -DSOLIDTEX_SANITIZE=thread
 cmake --build build-tsan -j"$(nproc)" --target test_placement test_synthesis
 # The instrumented TBB replaces Debian's (same version, same soname) for these runs only.
