@@ -19,7 +19,10 @@ struct SegmentationOptions {
 /// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Automatic separation:
 /// Otsu on the clearest of L*, a*, b*, chroma; the less compact class is the background; then the
 /// colour distance from the background (lighting evened out), with edges deciding the unclear
-/// pixels. A particle is everything inside its outer outline (holes filled). Deterministic.
+/// pixels. Two other readings compete with it (particles of two tones either side of the matrix;
+/// the dark gaps of a many-coloured pile) and win when their particles cover clearly more of the
+/// photo in compact bodies. A particle is everything inside its outer outline (holes filled).
+/// Deterministic.
 /// Throws InputError when no particle is found.
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options);

@@ -21,7 +21,7 @@ namespace {
 constexpr double kMinSpread = 1.0;     // Lab units: a feature flatter than this carries no classes
 constexpr double kMinContrast = 5.0;   // Delta E between the class means: below it, no visible classes
 constexpr int kChroma = 3;             // feature index after L, a, b
-constexpr double kClearlyMore = 1.25;  // the two-tone reading's solid share over the one-tone's
+constexpr double kClearlyMore = 1.25;  // another reading's solid share over the first's, to win
 constexpr double kMaxGapShare = 0.35;  // the gaps of a pile are the smaller, darker class
 constexpr double kGrainSigma = 1.0;    // pixels: the window of the matrix's grain
 constexpr float kGrainWeight = 3.0f;   // Delta E per unit of L* spread smoother than the matrix
