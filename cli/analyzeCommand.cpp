@@ -15,7 +15,8 @@ void addSegmentationOptions(CLI::App& command, SegmentationOptions& options) {
   command.add_flag("!--no-split", options.split, "Do not split touching particles");
   command
       .add_option("--min-area", options.minArea,
-                  "Drop particles smaller than this many pixels (default: scaled to the image)")
+                  "Drop particles smaller than this many pixels (default: the photo's, from its size and the "
+                  "sizes of its regions)")
       ->check(between(0, double(kMaxPhotoSide) * kMaxPhotoSide));
 }
 

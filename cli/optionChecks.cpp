@@ -38,6 +38,17 @@ CLI::Validator between(double low, double high) {
       "in [" + number(low) + ", " + number(high) + "]");
 }
 
+CLI::Validator atLeast(double low) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const double value = parsed(text);
+        if (std::isnan(value) || value < low)
+          return "must be at least " + number(low) + " (got " + text + ")";
+        return {};
+      },
+      "at least " + number(low));
+}
+
 CLI::Validator aboveAtMost(double low, double high) {
   const std::string range = "above " + number(low) + " and at most " + number(high);
   return CLI::Validator(
@@ -66,12 +77,14 @@ void checkNumberTypes(CLI::App& app) {
         return {};
       },
       "");
-  for (CLI::App* command : app.get_subcommands({}))
+  for (CLI::App* command : app.get_subcommands({})) {
+    if (CLI::Option* threads = command->get_option_no_throw("--threads")) threads->check(atLeast(0));
     for (CLI::Option* option : command->get_options()) {
       const std::string type = option->get_type_name();
       if (type == "FLOAT") option->check(finite);
       if (type == "UINT") option->check(unsignedWhole);
     }
+  }
 }
 
 }  // namespace solidtex::cli

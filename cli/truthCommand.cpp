@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/optionChecks.h"
 #include "pipeline/truthJob.h"
 
 namespace solidtex::cli {
@@ -33,9 +34,11 @@ Action addTruthCommand(CLI::App& app) {
   command->add_option("--large-radius", t.classes[1].meanRadius, "Median radius of the large class, voxels")
       ->capture_default_str();
   command->add_option("--large-share", t.classes[1].share, "Share of large particles by number (0-1)")
+      ->check(between(0, 1))
       ->capture_default_str();
   auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
-  command->add_option("--spread", *spread, "Standard deviation of log radius (both classes)")
+  command->add_option("--spread", *spread, "Standard deviation of log radius (both classes, 0-1)")
+      ->check(between(0, 1))
       ->capture_default_str();
   command->add_option("--elongation", t.elongation, "Largest axis stretch of a particle (1 = no stretch)")
       ->capture_default_str();

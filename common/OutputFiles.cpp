@@ -52,7 +52,16 @@ void clearSlots() {
   slotCount = 0;
 }
 
-std::string canonical(const std::string& path) { return fs::weakly_canonical(fs::absolute(path)).string(); }
+fs::path absolutePath(const std::string& path) {
+  std::error_code ec;
+  fs::path absolute = fs::absolute(path, ec);
+  if (ec)
+    throw InputError("cannot use " + path + ": the current folder no longer exists (cd to one that does, " +
+                     "or give an absolute path)");
+  return absolute;
+}
+
+std::string canonical(const std::string& path) { return fs::weakly_canonical(absolutePath(path)).string(); }
 
 fs::path folderOf(const fs::path& path) {
   return path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -112,6 +121,11 @@ void writeAll(int fd, const char* text) {
 
 extern "C" void onInterrupt(int signal) {
   if (committing.load()) return;  // the outputs are being renamed into place: let it finish
+  // `timeout` signals the command and then its process group: the second signal may reach another
+  // thread while the first is handled. One cleans up and says so; the others wait for its _exit.
+  static std::atomic<bool> handling{false};
+  if (handling.exchange(true))
+    for (;;) ::pause();
   const int count = slotCount.load();
   for (int i = 0; i < count; ++i)
     if (slotLive[i] && !slotIsFolder[i]) ::unlink(slotPath[i]);
@@ -178,7 +192,7 @@ void OutputFiles::addFolder(const std::string& option, const std::string& path) 
     throw InputError(option + " " + path + " is a file, not a folder");
   checkNotClaimed(option, path);
   std::vector<fs::path> missing;
-  for (fs::path p = fs::absolute(path).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+  for (fs::path p = absolutePath(path).lexically_normal(); !p.empty() && !fs::exists(p, ec);
        p = p.parent_path()) {
     missing.push_back(p);
     if (p == p.parent_path()) break;

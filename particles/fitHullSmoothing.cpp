@@ -83,7 +83,7 @@ std::optional<double> parseSmoothing(const std::string& text) {
     used = 0;
   }
   if (used != text.size() || !(radius >= 0 && radius <= 0.5))
-    throw InputError("smoothing must be auto or a number from 0 to 0.5, got '" + text + "'");
+    throw OptionError("--smoothing must be auto or a number from 0 to 0.5, got '" + text + "'");
   return radius;
 }
 

@@ -15,6 +15,7 @@ nlohmann::json runAnalyze(const AnalyzeJob& job) {
   addReport(outputs, job.report);
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
+  warnOfDroppedRegions(stats);
   nlohmann::json report = toJson(stats);
   if (job.labels) {
     const cv::Mat labels = drawLabels(photo, stats);

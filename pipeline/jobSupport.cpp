@@ -101,6 +101,16 @@ std::string progressText(const std::string& step, double fraction, double second
   return text;
 }
 
+void warnOfDroppedRegions(const ExemplarStats& stats, ProgressLine* progress) {
+  if (stats.areaShareBelowMinArea <= 0.5) return;
+  if (progress) progress->done();
+  std::fprintf(stderr,
+               "solidtex: warning: %s: %d regions, %.0f%% of the area that stands out, are smaller than the "
+               "minimum area of %g pixels and were dropped (see --min-area)\n",
+               stats.name.c_str(), stats.regionsBelowMinArea, 100 * stats.areaShareBelowMinArea,
+               stats.minArea);
+}
+
 void ProgressLine::update(const std::string& step, double fraction) {
   if (!enabled_) return;
   const auto now = Clock::now();

@@ -8,6 +8,7 @@
 
 #include "common/Grid.h"
 #include "common/OutputFiles.h"
+#include "segmentation/ExemplarStats.h"
 
 namespace solidtex {
 
@@ -79,6 +80,10 @@ private:
   std::optional<Clock::time_point> firstFraction_;  ///< when the current estimate began
   double fractionAtFirst_ = 0;                      ///< and the share done then
 };
+
+/// A warning line on stderr, below the progress line when there is one, when most of what stood
+/// out in the photo (by area) was dropped as smaller than the minimum area: the solid would miss it.
+void warnOfDroppedRegions(const ExemplarStats& stats, ProgressLine* progress = nullptr);
 
 /// The terminal's progress line: "STEP [########------------] 42% 1m 23s left"; no bar for a
 /// negative fraction, no estimate for a negative `secondsLeft`.

@@ -245,6 +245,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.update("segmenting the photo");
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
+  warnOfDroppedRegions(stats, &progress);
   const double scale = voxelsPerPixel(job, stats);
 
   timer.start("particle_shapes");

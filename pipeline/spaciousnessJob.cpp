@@ -78,7 +78,7 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
                                       {"best_fit", bestFits}};
     const std::string name =
         field.kind == PlacerKind::Delaunay ? "delaunay (circumcentres)" : placerName(field.kind);
-    errors.push_back({name, std::move(field.errors), field.seconds});
+    errors.push_back({name, std::move(field.errors)});
   }
   nlohmann::json report = {{"photo", job.photo},
                            {"dims", {dims.x, dims.y, dims.z}},

@@ -45,7 +45,7 @@ cv::Mat panelFor(const FieldErrors& field, double range) {
   }
   mean /= double(std::max<std::size_t>(1, field.errors.size()));
   text(panel, field.name, {x0, 22}, 0.6);
-  std::snprintf(line, sizeof line, "mean |err| %.3f  max %.2f  %.2f s", mean, worst, field.seconds);
+  std::snprintf(line, sizeof line, "mean |err| %.3f  max %.2f", mean, worst);
   text(panel, line, {x0, 44});
   return panel;
 }

@@ -11,12 +11,12 @@ namespace solidtex {
 struct FieldErrors {
   std::string name;
   std::vector<double> errors;
-  double seconds = 0;
 };
 using SpaciousnessErrors = std::vector<FieldErrors>;
 
-/// One histogram panel per field, side by side, on a shared error axis, with mean |error|, max
-/// and build time printed: an sRGB CV_32FC3 image for writeImage.
+/// One histogram panel per field, side by side, on a shared error axis, with mean |error| and max
+/// printed (times are the report's: the plot is the same bytes on every run): an sRGB CV_32FC3
+/// image for writeImage.
 cv::Mat plotSpaciousnessErrors(const SpaciousnessErrors& fields);
 
 }  // namespace solidtex

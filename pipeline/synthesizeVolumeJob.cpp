@@ -1,5 +1,6 @@
 #include "pipeline/synthesizeVolumeJob.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 
@@ -129,6 +130,17 @@ nlohmann::json measuredQuality(const DenseVolume& output, const DenseVolume& exe
 
 DenseVolume readVolumeExemplar(const std::string& path) {
   SolidVolume v = readVdb(path);
+  // Synthesis reads the whole box of active voxels: a few scattered voxels would make it a large,
+  // empty exemplar that takes minutes to analyse and has no texture to copy.
+  constexpr double kMinActiveShare = 0.01;
+  const double activeShare = double(v.activeVoxels) / double(v.dims.count());
+  if (activeShare < kMinActiveShare) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.3g%%", 100 * activeShare);
+    throw InputError("cannot use " + path + " as an exemplar: its active voxels fill " + share +
+                     " of their " + std::to_string(v.dims.x) + "x" + std::to_string(v.dims.y) + "x" +
+                     std::to_string(v.dims.z) + " box; crop it to the material");
+  }
   DenseVolume out;
   out.dims = v.dims;
   if (!v.color.empty()) {

@@ -3,6 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
 #include "segmentation/detail/color.h"
@@ -22,10 +28,36 @@ namespace {
 // small photo survive.
 constexpr double kMinAreaFraction = 1e-4;
 constexpr double kMinAreaFloor = 8;
+// Under 4 pixels a region has no outline to speak of, whatever the photo: noise.
+constexpr double kNoiseArea = 4;
+// A region under an eighth of the photo's typical particle is a speck beside it. A photo of many
+// small particles lowers the default down to the noise floor by this rule.
+constexpr double kTypicalShare = 1.0 / 8;
 
-double minAreaFor(const cv::Size& size, const SegmentationOptions& options) {
-  if (options.minArea >= 0) return options.minArea;
-  return std::max(kMinAreaFloor, kMinAreaFraction * double(size.area()));
+// Areas of the regions of `mask` of at least kNoiseArea pixels.
+std::vector<int> regionAreas(const cv::Mat& mask) {
+  cv::Mat labels, regions, centroids;
+  const int count = cv::connectedComponentsWithStats(mask, labels, regions, centroids, 8, CV_32S);
+  std::vector<int> areas;
+  for (int r = 1; r < count; ++r)
+    if (const int area = regions.at<int>(r, cv::CC_STAT_AREA); area >= kNoiseArea) areas.push_back(area);
+  return areas;
+}
+
+// The area at which half of the regions' pixels lie in regions at least as large: the photo's
+// typical particle, which many specks of noise do not move.
+double typicalArea(std::vector<int> areas) {
+  std::sort(areas.begin(), areas.end(), std::greater<>());
+  const double total = std::accumulate(areas.begin(), areas.end(), 0.0);
+  double covered = 0;
+  for (const int area : areas)
+    if ((covered += area) >= total / 2) return area;
+  return 0;
+}
+
+double defaultMinArea(const cv::Size& size, const std::vector<int>& areasAtNoise) {
+  const double byPhoto = std::max(kMinAreaFloor, kMinAreaFraction * double(size.area()));
+  return std::clamp(kTypicalShare * typicalArea(areasAtNoise), kNoiseArea, byPhoto);
 }
 
 cv::Mat particleMask(const cv::Mat& linear, const SegmentationOptions& options, double minArea) {
@@ -40,26 +72,53 @@ void checkPhoto(const cv::Mat& photo, const std::string& name) {
     throw InputError(name + ": photo is too small to segment");
 }
 
+std::string noParticlesMessage(const ExemplarStats& stats, const SegmentationOptions& options) {
+  const std::string minimum = std::to_string(int(std::ceil(stats.minArea))) + " pixels";
+  const std::string dropped = stats.regionsBelowMinArea > 0
+                                  ? "; " + std::to_string(stats.regionsBelowMinArea) +
+                                        " smaller regions were dropped (see --min-area)"
+                                  : "";
+  if (options.maskPath)
+    return stats.name + ": no particles found: the mask " + *options.maskPath +
+           " has no white region of at least " + minimum + dropped;
+  if (stats.regionsBelowMinArea > 0)
+    return stats.name + ": no particles found: the " + std::to_string(stats.regionsBelowMinArea) +
+           " regions that stand out from the background are all smaller than " + minimum +
+           " (see --min-area)";
+  return stats.name + ": no particles found: nothing stands out from the background (give a mask, " +
+         "white = particle)";
+}
+
 }  // namespace
 
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options) {
   checkPhoto(photoSrgb, name);
-  const double minArea = minAreaFor(photoSrgb.size(), options);
   const cv::Mat linear = detail::srgbToLinear(photoSrgb);
-  cv::Mat labels = detail::labelParticles(particleMask(linear, options, minArea), options.split);
-  detail::fillEnclosedHoles(labels);
+  const cv::Mat maskAtNoise = particleMask(linear, options, kNoiseArea);
+  const std::vector<int> areasAtNoise = regionAreas(maskAtNoise);
 
   ExemplarStats stats;
   stats.name = name;
   stats.imageWidth = photoSrgb.cols;
   stats.imageHeight = photoSrgb.rows;
-  stats.minArea = minArea;
-  stats.particles = detail::measureParticles(labels, linear, minArea);
-  if (stats.particles.empty())
-    throw InputError(
-        name + ": no particles found (nothing of at least " + std::to_string(int(std::ceil(minArea))) +
-        " pixels stands out from the background; give a mask, white = particle, or a smaller minimum area)");
+  stats.minArea = options.minArea >= 0 ? options.minArea : defaultMinArea(photoSrgb.size(), areasAtNoise);
+  double standingOut = 0, dropped = 0;
+  for (const int area : areasAtNoise) {
+    standingOut += area;
+    if (area < stats.minArea) {
+      dropped += area;
+      ++stats.regionsBelowMinArea;
+    }
+  }
+  stats.areaShareBelowMinArea = standingOut > 0 ? dropped / standingOut : 0;
+  const cv::Mat mask = stats.minArea == kNoiseArea || options.maskPath
+                           ? maskAtNoise
+                           : particleMask(linear, options, stats.minArea);
+  cv::Mat labels = detail::labelParticles(mask, options.split);
+  detail::fillEnclosedHoles(labels);
+  stats.particles = detail::measureParticles(labels, linear, stats.minArea);
+  if (stats.particles.empty()) throw InputError(noParticlesMessage(stats, options));
   detail::measureBackground(stats, linear);
   std::vector<const Particle2D*> counted;
   for (std::size_t i : statisticalParticles(stats.particles)) counted.push_back(&stats.particles[i]);

@@ -28,6 +28,8 @@ nlohmann::json toJson(const ExemplarStats& stats) {
           {"area_fraction", stats.areaFraction},
           {"background_color", rgb(stats.backgroundColor)},
           {"min_area", stats.minArea},
+          {"regions_below_min_area", stats.regionsBelowMinArea},
+          {"area_share_below_min_area", stats.areaShareBelowMinArea},
           {"histogram", histogramJson(stats.histogram)},
           {"size_pairs", std::move(pairs)}};
 }

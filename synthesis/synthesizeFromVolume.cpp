@@ -370,7 +370,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
     throw InputError("the exemplar volume holds values that are not finite (NaN or infinity)");
   for (const int side : {o.dims.x, o.dims.y, o.dims.z})
     if (side < 2 || side > 1024)
-      throw InputError("each output side must be in [2, 1024], got " + std::to_string(side));
+      throw OptionError("--size and --dims must be in [2, 1024], got " + std::to_string(side));
   auto number = [](double v) {
     std::ostringstream text;
     text << v;
@@ -378,7 +378,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
   };
   auto inRange = [&](const std::string& name, double v, double lo, double hi) {
     if (!(v >= lo && v <= hi))
-      throw InputError(name + " must be in [" + number(lo) + ", " + number(hi) + "], got " + number(v));
+      throw OptionError(name + " must be in [" + number(lo) + ", " + number(hi) + "], got " + number(v));
   };
   inRange("--jitter", o.jitter, 0, 2);
   inRange("--k", o.k, 1, kMaxK);
@@ -394,7 +394,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
     const VoxelBox& r = *o.region;
     if (!(r.lo.x >= 0 && r.lo.y >= 0 && r.lo.z >= 0 && r.hi.x <= o.dims.x && r.hi.y <= o.dims.y &&
           r.hi.z <= o.dims.z && r.lo.x < r.hi.x && r.lo.y < r.hi.y && r.lo.z < r.hi.z))
-      throw InputError(
+      throw OptionError(
           "--region must be a non-empty box X0 Y0 Z0 X1 Y1 Z1 inside the output (0 <= X0 < X1 <= " +
           std::to_string(o.dims.x) + ", likewise for Y and Z)");
   }
@@ -413,11 +413,11 @@ void checkPeriodicSize(const VolumeSynthesisOptions& o, int corrected) {
     return side(o.dims.x) + "x" + side(o.dims.y) + "x" + side(o.dims.z);
   };
   const std::string down = sizes(false), up = sizes(true);
-  throw InputError("--periodic needs every output side to be a multiple of " + std::to_string(multiple) +
-                   " (one halving per corrected level, " + std::to_string(corrected) +
-                   " here; fewer --levels lower it), got " + std::to_string(o.dims.x) + "x" +
-                   std::to_string(o.dims.y) + "x" + std::to_string(o.dims.z) + ": " + down +
-                   (up == down ? "" : " or " + up) + " would tile");
+  throw OptionError("--periodic needs every output side to be a multiple of " + std::to_string(multiple) +
+                    " (one halving per corrected level, " + std::to_string(corrected) +
+                    " here; fewer --levels lower it), got " + std::to_string(o.dims.x) + "x" +
+                    std::to_string(o.dims.y) + "x" + std::to_string(o.dims.z) + ": " + down +
+                    (up == down ? "" : " or " + up) + " would tile");
 }
 
 // Levels whose window (window x spacing) fits in half the domain's smallest side.
@@ -478,7 +478,13 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
     stats.spacing = level.spacing;
     stats.synthesised = level.window.dims();
     stats.corrected = level.appearance >= 0;
+    const auto levelVoxels = [&](int j) { return plan[std::size_t(j)].window.dims().count(); };
+    const std::string levelName = "level " + std::to_string(l + 1) + "/" + std::to_string(plan.size());
     if (level.appearance >= 0) {
+      // A large exemplar's analysis takes a while before the level's first voxel: say so.
+      if (o.progress)
+        o.progress(levelName + ": analysing the exemplar",
+                   pyramidFraction(int(plan.size()), int(l), -1, 1, levelVoxels));
       const auto analysisStart = std::chrono::steady_clock::now();
       AppearanceLevel& a = appearance[std::size_t(level.appearance)];
       a = synthesis::buildAppearanceLevel(exemplar, domain, level.spacing, appearanceOptions);
@@ -498,10 +504,9 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
     stats.seconds = secondsSince(levelStart);
     result.statistics.levels.push_back(stats);
     if (o.progress)
-      o.progress("level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) + " (spacing " +
-                     std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")",
-                 pyramidFraction(int(plan.size()), int(l), 0, 1,
-                                 [&](int j) { return plan[std::size_t(j)].window.dims().count(); }));
+      o.progress(levelName + " (spacing " + std::to_string(level.spacing) +
+                     (stats.corrected ? ", corrected" : "") + ")",
+                 pyramidFraction(int(plan.size()), int(l), 0, 1, levelVoxels));
   }
   copyOut(*grid, domain, exemplar, result);
   result.statistics.seconds = secondsSince(start);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include <opencv2/imgproc.hpp>
 
@@ -243,9 +244,9 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
 }
 
 void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) {
-  if (!(c.meanRadius >= 1 && c.share > 0 && c.share <= 1 && c.radiusSpread >= 0 && c.radiusSpread <= 1))
-    throw InputError(
-        "each particle class needs a radius of at least 1 voxel, a share in (0, 1] and a spread in [0, 1]");
+  if (!(c.meanRadius >= 1)) throw OptionError("--small-radius and --large-radius must be at least 1 voxel");
+  if (!(c.share > 0 && c.share <= 1)) throw OptionError("--large-share must be between 0 and 1");
+  if (!(c.radiusSpread >= 0 && c.radiusSpread <= 1)) throw OptionError("--spread must be between 0 and 1");
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the
   // other axes by flatten^(-1/3). A periodic volume must hold the longest particle with room to
   // spare, or it would touch its own image.
@@ -254,29 +255,36 @@ void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) 
                          largestReach(options);
   const int edge = std::min({options.dims.x, options.dims.y, options.dims.z});
   if (longest + 4 > edge)
-    throw InputError("the largest " + std::string(truthShapeName(options.shape)) + "s (" +
-                     std::to_string(int(std::ceil(longest))) +
-                     " voxels across) do not fit the truth's smallest edge (" + std::to_string(edge) + ")");
+    throw OptionError("the largest " + std::string(truthShapeName(options.shape)) + "s (" +
+                      std::to_string(int(std::ceil(longest))) +
+                      " voxels across) do not fit the smallest of --dims (" + std::to_string(edge) +
+                      "): lower --small-radius, --large-radius, --spread or --elongation, or raise --dims");
+}
+
+// Each limit names the command line's option, as the library's users see the same words in its docs.
+void checkRange(const char* option, double value, double low, double high, bool openLow = false,
+                bool openHigh = false) {
+  if ((openLow ? value > low : value >= low) && (openHigh ? value < high : value <= high)) return;
+  std::ostringstream text;
+  text << option << " must be " << (openLow ? "above " : "at least ") << low << " and "
+       << (openHigh ? "below " : "at most ") << high << " (got " << value << ")";
+  throw OptionError(text.str());
 }
 
 void validate(const ParticleTruthOptions& options) {
   const Dims& d = options.dims;
   if (d.x < 16 || d.y < 16 || d.z < 16 || d.count() > (std::size_t(1) << 30))
-    throw InputError("truth dimensions must be at least 16 and at most 2^30 voxels in all");
-  if (!(options.noise >= 0 && options.noise <= 1)) throw InputError("truth photo noise must be in [0, 1]");
-  if (!(options.blur >= 0 && options.blur <= 16))
-    throw InputError("truth photo blur must be in [0, 16] pixels");
-  if (!(options.volumeFraction > 0 && options.volumeFraction < 0.5))
-    throw InputError("truth volume fraction must be in (0, 0.5)");
-  if (options.classes.empty()) throw InputError("truth needs at least one class of particles");
-  if (!(options.elongation >= 1 && options.elongation <= 3))
-    throw InputError("truth elongation must be in [1, 3]");
+    throw OptionError("--dims must be at least 16 on each edge and at most 2^30 voxels in all (got " +
+                      std::to_string(d.x) + " " + std::to_string(d.y) + " " + std::to_string(d.z) + ")");
+  checkRange("--noise", options.noise, 0, 1);
+  checkRange("--blur", options.blur, 0, 16);
+  checkRange("--fraction", options.volumeFraction, 0, 0.5, true, true);
+  if (options.classes.empty()) throw OptionError("truth needs at least one class of particles");
+  checkRange("--elongation", options.elongation, 1, 3);
   // Thinner than 1:5 and a small particle is a voxel or two thick: its shape is lost.
-  if (!(options.flatten >= 0.2 && options.flatten <= 1))
-    throw InputError("truth flatten must be in [0.2, 1]");
+  checkRange("--flatten", options.flatten, 0.2, 1);
   // Below 1 the shape is no longer convex; far above 16 it is a box with voxel-sharp edges.
-  if (!(options.exponent >= 1 && options.exponent <= 16))
-    throw InputError("truth superellipsoid exponent must be in [1, 16]");
+  checkRange("--exponent", options.exponent, 1, 16);
   for (const ParticleClass& c : options.classes) validateClass(c, options);
 }
 

@@ -25,6 +25,7 @@ struct SolidVolume {
   std::vector<std::array<float, 3>> sourceVoxel;  ///< dims.count() or empty; exemplar voxel each voxel copies
   Voxel origin;  ///< where voxel (0,0,0) lies in a larger volume this is a region of (world = (origin + i) x
                  ///< voxel size)
+  std::uint64_t activeVoxels = 0;  ///< read from a file: active voxels of its density or color grid
   std::map<std::string, std::string> metadata;  ///< file metadata: command line, seed, exemplar, ...
 };
 

@@ -245,6 +245,25 @@ std::uint64_t readingAllowance(const std::string& path) {
   return std::uint64_t(std::min(bytes, double(availableMemoryBytes())));
 }
 
+// Every method reads a volume as cubes on its index axes: other voxels would be silently distorted.
+void checkCubicVoxels(const std::string& path, const openvdb::GridBase& grid) {
+  const openvdb::math::MapBase& map = *grid.transform().baseMap();
+  const bool axisAligned =
+      map.isType<openvdb::math::UniformScaleMap>() || map.isType<openvdb::math::UniformScaleTranslateMap>() ||
+      map.isType<openvdb::math::ScaleMap>() || map.isType<openvdb::math::ScaleTranslateMap>() ||
+      map.isType<openvdb::math::TranslationMap>();
+  const openvdb::Vec3d size = grid.voxelSize();
+  const double tolerance = 1e-6 * size.x();
+  if (axisAligned && std::abs(size.y() - size.x()) <= tolerance && std::abs(size.z() - size.x()) <= tolerance)
+    return;
+  char sides[96];
+  std::snprintf(sides, sizeof sides, "%g x %g x %g", size.x(), size.y(), size.z());
+  throw InputError(
+      "cannot read " + path + ": grid \"" + grid.getName() + "\" has " +
+      (axisAligned ? std::string("voxels of ") + sides : std::string("voxels turned against its axes")) +
+      "; resample it to cubic, axis-aligned voxels first");
+}
+
 template <typename GridT>
 typename GridT::Ptr typedGrid(const VdbContents& contents, const std::string& path, const std::string& name,
                               const char* type) {
@@ -254,6 +273,7 @@ typename GridT::Ptr typedGrid(const VdbContents& contents, const std::string& pa
   if (!typed)
     throw InputError("cannot read " + path + ": grid \"" + name + "\" is " + readableReason(grid->type()) +
                      ", not " + type);
+  checkCubicVoxels(path, *typed);
   return typed;
 }
 
@@ -319,6 +339,8 @@ SolidVolume readVdb(const std::string& path) {
            (density ? sizeof(float) : 0) + (color ? sizeof(Rgb) : 0) + (ids ? sizeof(std::int32_t) : 0));
   SolidVolume volume;
   volume.dims = {box.dim().x(), box.dim().y(), box.dim().z()};
+  volume.activeVoxels =
+      std::max(density ? density->activeVoxelCount() : 0, color ? color->activeVoxelCount() : 0);
   if (density) denseFrom(*density, box, volume.density);
   if (color) denseFrom(*color, box, volume.color);
   if (ids) denseFrom(*ids, box, volume.particleId);

@@ -34,6 +34,8 @@ OIIO::ImageSpec pageSpec(const Dims& dims, int channels, StackSample sample, con
                                          " slices, isotropic voxels of " + std::to_string(voxelSize.size) +
                                          " " + voxelSize.unit);
   spec.attribute("Software", "solidtex");
+  // Left to OpenImageIO, DateTime holds the wall clock, and two runs of one command differ in bytes.
+  spec.attribute("DateTime", "");
   return spec;
 }
 

@@ -175,6 +175,16 @@ cv::Mat twoSidedBackground(const cv::Mat& lab, const cv::Mat& middle) {
   return backgroundByEdges(distance, seeds, lowest);
 }
 
+// True when most of `mask` is one 8-connected piece: the gaps of a pile join up around its
+// particles, while dark particles scattered on a light ground are as many pieces as particles.
+bool isNetwork(const cv::Mat& mask) {
+  cv::Mat labels, pieces, centroids;
+  const int count = cv::connectedComponentsWithStats(mask, labels, pieces, centroids, 8, CV_32S);
+  int largest = 0;
+  for (int p = 1; p < count; ++p) largest = std::max(largest, pieces.at<int>(p, cv::CC_STAT_AREA));
+  return largest >= 0.5 * cv::countNonZero(mask);
+}
+
 cv::Mat particlesFrom(const cv::Mat& background, double minArea, bool invert) {
   cv::Mat particles = invert ? background : cv::Mat(background == 0);
   removeSmallComponents(particles, minArea);
@@ -201,7 +211,7 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
   // - particles of two tones, one lighter and one darker than the matrix between them (pebbles in
   //   mortar), where one threshold finds one tone only;
   // - a pile of particles of many colours (beach shingle), where the clearest feature splits the
-  //   particles by colour and only the dark gaps between them are background.
+  //   particles by colour and only the dark gaps between them, joined up, are background.
   // Another reading wins when its particles cover clearly more of the photo in compact bodies
   // (a quarter more: the rosettes of a leopard's coat read either way, and the first reading
   // reads them as they look).
@@ -212,7 +222,9 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
     const Axis darkGaps{0, otsu(f[0]).threshold, false};
     const cv::Mat gaps = f[0] <= darkGaps.threshold;
     if (cv::countNonZero(gaps) <= kMaxGapShare * double(gaps.total()))
-      others.push_back(oneSidedBackground(lab, darkGaps, gaps));
+      if (cv::Mat background = oneSidedBackground(lab, darkGaps, gaps);
+          !background.empty() && isNetwork(background))
+        others.push_back(background);
   }
   double best = kClearlyMore * solidShare(invert ? ~particles : particles, minArea);
   cv::Mat chosen = particles;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -39,6 +40,7 @@ protected:
     inputs_ = emptyScratch("inputs-" + std::to_string(getpid()));
     const fs::path coins = fs::path(SOLIDTEX_DATA_DIR) / "particles/coins.png";
     fs::copy_file(coins, inputs_ / "coins.png");
+    fs::copy_file(fs::path(SOLIDTEX_DATA_DIR) / "volumes/ct_stent_64.vdb", inputs_ / "ct.vdb");
     const Bytes png = readBytes(coins);
     writeBytes(inputs_ / "empty.png", {});
     writeBytes(inputs_ / "text.png", Bytes{'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e', '\n'});
@@ -70,7 +72,7 @@ protected:
 
   /// Runs `arguments` (with IN standing for the inputs folder and OUT for an empty output folder):
   /// it must exit with `exitCode`, print one `solidtex: error:` line and leave no file anywhere.
-  void expectRefused(const std::string& arguments, int exitCode) {
+  std::string expectRefused(const std::string& arguments, int exitCode) {
     const fs::path out = emptyScratch("out-" + std::to_string(getpid()));
     const auto before = filesUnder(inputs_);
     std::string line = arguments;
@@ -80,10 +82,14 @@ protected:
         line.replace(at, key.size(), (value / "").string());
     const Outcome outcome = runSolidtex(line);
     EXPECT_EQ(outcome.exitCode, exitCode) << arguments;
-    ASSERT_EQ(outcome.errLines.size(), 1u) << arguments;
+    if (outcome.errLines.size() != 1u) {
+      ADD_FAILURE() << arguments << " printed " << outcome.errLines.size() << " lines on stderr";
+      return {};
+    }
     EXPECT_EQ(outcome.errLines[0].rfind("solidtex: error: ", 0), 0u) << outcome.errLines[0];
     EXPECT_TRUE(filesUnder(out).empty()) << arguments << " left " << filesUnder(out).front();
     EXPECT_EQ(filesUnder(inputs_), before) << arguments << " wrote beside its inputs";
+    return outcome.errLines[0];
   }
 
   static void TearDownTestSuite() { fs::remove_all(inputs_); }
@@ -172,6 +178,47 @@ TEST_F(BadInput, AbsurdValuesAreRefusedAsCommandLineErrors) {
   for (const std::string& option :
        {std::string("--scale 0"), std::string("--scale 1e9"), std::string("--scale inf")})
     expectRefused("compare IN/coins.png IN/good.vdb " + option, 2);
+}
+
+TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"truth -o OUT/t --dims 64 64 16 --fraction 0.99", "--fraction"},
+      {"truth -o OUT/t --dims 64 64 16 --fraction 0", "--fraction"},
+      {"truth -o OUT/t --dims 64 64 16 --large-share 2", "--large-share"},
+      {"truth -o OUT/t --dims 64 64 16 --spread 5", "--spread"},
+      {"truth -o OUT/t --dims 64 64 16 --exponent 0.5", "--exponent"},
+      {"truth -o OUT/t --dims 64 64 16 --elongation 0.5", "--elongation"},
+      {"truth -o OUT/t --dims 64 64 16 --flatten 0.01", "--flatten"},
+      {"truth -o OUT/t --dims 64 64 16 --blur -1", "--blur"},
+      {"truth -o OUT/t --dims 64 64 16 --noise -1", "--noise"},
+      {"truth -o OUT/t --dims 64 64 16 --small-radius 0", "--small-radius"},
+      {"truth -o OUT/t --dims 64 64 16 --large-radius 40", "--large-radius"},
+      {"truth -o OUT/t --dims 64 64 1", "--dims"},
+      {"particles IN/coins.png -o OUT/a.vdb --size 16 --smoothing 0.9", "--smoothing"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --jitter 5", "--jitter"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --exclusion -1", "--exclusion"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --corrections -1", "--corrections"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 32 --region 0 0 0 40 40 40", "--region"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --region 5 5 5 5 5 5", "--region"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 30 --periodic", "--periodic"},
+      {"synthesize2d IN/coins.png -o OUT/a.png --threads -1", "--threads"}};
+  for (const auto& [arguments, option] : cases) {
+    const std::string line = expectRefused(arguments, 2);
+    EXPECT_NE(line.find(option), std::string::npos) << arguments << ": " << line;
+  }
+}
+
+TEST_F(BadInput, ADeletedCurrentFolderIsSaidInOneLine) {
+  const fs::path gone = emptyScratch("gone-" + std::to_string(getpid()));
+  const fs::path before = fs::current_path();
+  fs::current_path(gone);
+  fs::remove(gone);
+  const Outcome outcome = runSolidtex("particles " + word(inputs_ / "coins.png") + " --size 16 -o a.vdb");
+  fs::current_path(before);
+  EXPECT_EQ(outcome.exitCode, 1);
+  ASSERT_EQ(outcome.errLines.size(), 1u);
+  EXPECT_NE(outcome.errLines[0].find("the current folder no longer exists"), std::string::npos)
+      << outcome.errLines[0];
 }
 
 TEST_F(BadInput, SizesBeyondMemoryAreRefusedUpFront) {

@@ -52,7 +52,8 @@ bool writing(const fs::path& folder) {
   return false;
 }
 
-void expectInterruptedWhileWriting(int signal, int exitCode) {
+/// `deliveries` signals back to back, as `timeout` sends one to the command and one to its group.
+void expectInterruptedWhileWriting(int signal, int exitCode, int deliveries = 1) {
   const fs::path out = emptyScratch("signal" + std::to_string(signal));
   const fs::path err = out.parent_path() / ("signal" + std::to_string(signal) + ".stderr");
   const pid_t pid = start({"particles", kCoins, "--size", "160", "--quiet", "-o", (out / "v.vdb").string(),
@@ -63,7 +64,7 @@ void expectInterruptedWhileWriting(int signal, int exitCode) {
   while (!writing(out) && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::microseconds(500));
   ASSERT_TRUE(writing(out)) << "the .vdb was never seen being written";
-  kill(pid, signal);
+  for (int d = 0; d < deliveries; ++d) kill(pid, signal);
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
@@ -79,6 +80,8 @@ void expectInterruptedWhileWriting(int signal, int exitCode) {
 TEST(Signals, InterruptDuringTheWriteLeavesNothing) { expectInterruptedWhileWriting(SIGINT, 130); }
 
 TEST(Signals, TerminateDuringTheWriteLeavesNothing) { expectInterruptedWhileWriting(SIGTERM, 143); }
+
+TEST(Signals, TwoTerminationsAtOnceSayItOnce) { expectInterruptedWhileWriting(SIGTERM, 143, 2); }
 
 TEST(FullDisk, IsAnErrorNeverATruncatedFile) {
   const fs::path disk = emptyScratch("fulldisk");

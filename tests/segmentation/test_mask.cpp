@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -94,9 +95,16 @@ TEST_F(SegmentationMask, MustMatchThePhotoSize) {
   EXPECT_THROW(analyzeExemplar(noisePhoto({200, 170}), "noise", withMask(path_, true)), InputError);
 }
 
-TEST_F(SegmentationMask, EmptyMaskMeansNoParticles) {
+TEST_F(SegmentationMask, EmptyMaskMeansNoParticlesAndSaysSo) {
   writeImage(path_, cv::Mat::zeros(size_, CV_8UC1));
-  EXPECT_THROW(analyzeExemplar(noisePhoto(size_), "noise", withMask(path_, true)), InputError);
+  try {
+    analyzeExemplar(noisePhoto(size_), "noise", withMask(path_, true));
+    FAIL() << "an all-black mask gave particles";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the mask " + path_ + " has no white region"), std::string::npos) << message;
+    EXPECT_EQ(message.find("give a mask"), std::string::npos) << message;
+  }
 }
 
 TEST_F(SegmentationMask, MissingMaskFileIsAnInputError) {

@@ -1,5 +1,8 @@
 #include <cmath>
 #include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -163,14 +166,34 @@ TEST(SynthesizeFromVolume, RefusesBadInput) {
   const DenseVolume exemplar = layeredVolume(20, 5, 1);
   VolumeSynthesisOptions o = smallOptions(16);
   EXPECT_THROW(synthesizeFromVolume(DenseVolume{{8, 8, 8}, 1, std::vector<float>(512)}, o), InputError);
+  // Values out of range are the command line's errors (exit 2), each naming its option.
+  auto expectOptionError = [&](const VolumeSynthesisOptions& options, const std::string& option) {
+    try {
+      synthesizeFromVolume(exemplar, options);
+      ADD_FAILURE() << option << " was accepted";
+    } catch (const OptionError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(option, 0), 0u) << e.what();
+    }
+  };
   o.levels = 9;
-  EXPECT_THROW(synthesizeFromVolume(exemplar, o), InputError);
-  o = smallOptions(16);
-  o.region = VoxelBox{{0, 0, 0}, {17, 4, 4}};
-  EXPECT_THROW(synthesizeFromVolume(exemplar, o), InputError);
+  expectOptionError(o, "--levels");
+  for (const VoxelBox& region : {VoxelBox{{0, 0, 0}, {17, 4, 4}}, VoxelBox{{5, 5, 5}, {5, 5, 5}}}) {
+    o = smallOptions(16);
+    o.region = region;
+    expectOptionError(o, "--region");
+  }
   o = smallOptions(16);
   o.window = 4;
-  EXPECT_THROW(synthesizeFromVolume(exemplar, o), InputError);
+  expectOptionError(o, "--appearance");
+  o = smallOptions(16);
+  o.jitter = 5;
+  expectOptionError(o, "--jitter");
+  o = smallOptions(16);
+  o.exclusion = -1;
+  expectOptionError(o, "--exclusion");
+  o = smallOptions(16);
+  o.corrections = -1;
+  expectOptionError(o, "--corrections");
   // a 16^3 domain corrects 1 level: periodic sides must be even
   o = smallOptions(16);
   o.dims = {16, 15, 16};
@@ -178,11 +201,32 @@ TEST(SynthesizeFromVolume, RefusesBadInput) {
   try {
     synthesizeFromVolume(exemplar, o);
     FAIL() << "a periodic side of 15 was accepted";
-  } catch (const InputError& e) {
+  } catch (const OptionError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("16x14x16 or 16x16x16 would tile"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos);
   }
+}
+
+// A large exemplar's analysis takes long before any voxel is made: the first progress says so.
+TEST(SynthesizeFromVolume, ProgressStartsBeforeTheFirstAnalysis) {
+  VolumeSynthesisOptions o = smallOptions(16);
+  std::vector<std::pair<std::string, double>> steps;
+  o.progress = [&](const std::string& step, double fraction) { steps.emplace_back(step, fraction); };
+  synthesizeFromVolume(layeredVolume(20, 5, 1), o);
+  // Each corrected level says it analyses the exemplar before it reports the level done.
+  int analyses = 0;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    if (steps[s].first.find(": analysing the exemplar") == std::string::npos) continue;
+    ++analyses;
+    ASSERT_LT(s + 1, steps.size());
+    const std::string level = steps[s].first.substr(0, steps[s].first.find(':'));
+    EXPECT_EQ(steps[s + 1].first.rfind(level + " (", 0), 0u) << steps[s + 1].first;
+    EXPECT_NE(steps[s + 1].first.find("corrected"), std::string::npos) << steps[s + 1].first;
+  }
+  EXPECT_GT(analyses, 0);
+  for (std::size_t s = 1; s < steps.size(); ++s) EXPECT_GE(steps[s].second, steps[s - 1].second);
+  EXPECT_DOUBLE_EQ(steps.back().second, 1);
 }
 
 namespace {

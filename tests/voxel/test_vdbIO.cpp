@@ -110,6 +110,38 @@ TEST(VdbIO, AVolumeThatStartsElsewhereIsReadFromItsFirstVoxel) {
   fs::remove(path);
 }
 
+// A volume read as cubes on its index axes: anything else must be refused, not silently distorted.
+TEST(VdbIO, OnlyCubicAxisAlignedVoxelsAreRead) {
+  using openvdb::math::Transform;
+  openvdb::initialize();
+  const auto path = tempPath("spacing.vdb");
+  auto readWith = [&](const Transform::Ptr& transform) {
+    auto grid = openvdb::FloatGrid::create(0.f);
+    grid->setName("density");
+    grid->setTransform(transform);
+    grid->tree().setValue(openvdb::Coord(0, 0, 0), 0.5f);
+    grid->tree().setValue(openvdb::Coord(1, 1, 1), 0.75f);
+    openvdb::io::File(path.string()).write({grid});
+    return readVdb(path.string());
+  };
+  auto uniform = Transform::createLinearTransform(0.25);
+  uniform->postTranslate(openvdb::Vec3d(3, -2, 1));
+  EXPECT_EQ(readWith(uniform).dims, (Dims{2, 2, 2}));
+  const auto stretched =
+      std::make_shared<Transform>(std::make_shared<openvdb::math::ScaleMap>(openvdb::Vec3d(1, 2, 0.5)));
+  auto turned = Transform::createLinearTransform(1.0);
+  turned->postRotate(0.3, openvdb::math::Z_AXIS);
+  for (const auto& transform : {stretched, turned}) {
+    try {
+      readWith(transform);
+      ADD_FAILURE() << transform->mapType() << " was read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("resample it to cubic"), std::string::npos) << e.what();
+    }
+  }
+  fs::remove(path);
+}
+
 TEST(VdbIO, UnwritablePathThrowsAndLeavesNothing) {
   const fs::path dir = tempPath("missing_folder");
   fs::remove_all(dir);
