@@ -45,10 +45,6 @@ void checkJob(const ParticleSolidJob& job) {
     throw OptionError("--shapes must be in [1, 4096]");
 }
 
-double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
-  return job.voxelsPerPixel > 0 ? job.voxelsPerPixel : defaultVoxelsPerPixel(stats, job.dims);
-}
-
 std::map<std::string, std::string> metadataOf(const ParticleSolidJob& job, const ExemplarStats& stats,
                                               const PlacementResult& placement, double scale,
                                               const SectionSizing& sizing, double smoothing) {
@@ -162,6 +158,22 @@ int largestBoxSide(const ExemplarStats& stats) {
   int side = 1;
   for (const auto& pair : stats.sizePairs) side = std::max({side, pair.width, pair.height});
   return side;
+}
+
+double voxelsPerPixel(const ParticleSolidJob& job, const ExemplarStats& stats) {
+  if (job.voxelsPerPixel <= 0) return defaultVoxelsPerPixel(stats, job.dims);
+  // Below a voxel across, the photo's largest particle would be no particle at all.
+  const double largest = largestBoxSide(stats);
+  if (largest * job.voxelsPerPixel < 1) {
+    char text[160];
+    std::snprintf(
+        text, sizeof text,
+        "--scale %g makes the photo's largest particle (%g pixels across) less than a voxel: give at "
+        "least %.3g",
+        job.voxelsPerPixel, largest, 1 / largest);
+    throw OptionError(text);
+  }
+  return job.voxelsPerPixel;
 }
 
 double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims) {

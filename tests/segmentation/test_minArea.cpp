@@ -56,7 +56,8 @@ TEST(SegmentationMinArea, RegionsDroppedAsTooSmallAreCounted) {
 
 TEST(SegmentationMinArea, LargeParticlesKeepThePhotoSizeDefault) {
   const std::vector<Disc> discs{{{60, 60}, 20, {0.1f, 0.1f, 0.1f}}, {{150, 100}, 25, {0.1f, 0.1f, 0.1f}}};
-  const ExemplarStats stats = analyzeExemplar(test::discPhoto({220, 180}, {0.8f, 0.8f, 0.8f}, discs), "big", {});
+  const ExemplarStats stats =
+      analyzeExemplar(test::discPhoto({220, 180}, {0.8f, 0.8f, 0.8f}, discs), "big", {});
   EXPECT_EQ(stats.minArea, 8);
   EXPECT_EQ(stats.particles.size(), 2u);
 }
