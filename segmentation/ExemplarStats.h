@@ -49,7 +49,7 @@ struct ExemplarStats {
   cv::Mat backgroundResidual;  ///< CV_32FC3, image-sized, linear colour minus background mean, 0 on particles
   double areaFraction = 0;     ///< particle pixels / all pixels ("crowdedness")
   double minArea = 0;  ///< pixels; smaller particles were dropped as noise (apply the same to sections)
-  int regionsBelowMinArea = 0;       ///< regions of 4 pixels or more that were dropped as smaller
+  int regionsBelowMinArea = 0;       ///< regions (touching ones split) of 4 pixels or more dropped as smaller
   double areaShareBelowMinArea = 0;  ///< their share of the area of all regions of 4 pixels or more
   AreaHistogram histogram;
   std::vector<SizePair> sizePairs;  ///< over non-border particles, sorted by (width, height)

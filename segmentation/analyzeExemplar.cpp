@@ -34,17 +34,21 @@ constexpr double kNoiseArea = 4;
 // small particles lowers the default down to the noise floor by this rule.
 constexpr double kTypicalShare = 1.0 / 8;
 
-// Areas of the regions of `mask` of at least kNoiseArea pixels.
-std::vector<int> regionAreas(const cv::Mat& mask) {
-  cv::Mat labels, regions, centroids;
-  const int count = cv::connectedComponentsWithStats(mask, labels, regions, centroids, 8, CV_32S);
+// Areas of the labelled particles of at least kNoiseArea pixels.
+std::vector<int> particleAreas(const cv::Mat& labels) {
+  double most = 0;
+  cv::minMaxLoc(labels, nullptr, &most);
+  std::vector<int> counts(std::size_t(most) + 1, 0);
+  for (int r = 0; r < labels.rows; ++r)
+    for (const int* label = labels.ptr<int>(r); label != labels.ptr<int>(r) + labels.cols; ++label)
+      ++counts[std::size_t(*label)];
   std::vector<int> areas;
-  for (int r = 1; r < count; ++r)
-    if (const int area = regions.at<int>(r, cv::CC_STAT_AREA); area >= kNoiseArea) areas.push_back(area);
+  for (std::size_t label = 1; label < counts.size(); ++label)
+    if (counts[label] >= kNoiseArea) areas.push_back(counts[label]);
   return areas;
 }
 
-// The area at which half of the regions' pixels lie in regions at least as large: the photo's
+// The area at which half of the particles' pixels lie in particles at least as large: the photo's
 // typical particle, which many specks of noise do not move.
 double typicalArea(std::vector<int> areas) {
   std::sort(areas.begin(), areas.end(), std::greater<>());
@@ -95,8 +99,9 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options) {
   checkPhoto(photoSrgb, name);
   const cv::Mat linear = detail::srgbToLinear(photoSrgb);
-  const cv::Mat maskAtNoise = particleMask(linear, options, kNoiseArea);
-  const std::vector<int> areasAtNoise = regionAreas(maskAtNoise);
+  const cv::Mat labelsAtNoise =
+      detail::labelParticles(particleMask(linear, options, kNoiseArea), options.split);
+  const std::vector<int> areasAtNoise = particleAreas(labelsAtNoise);
 
   ExemplarStats stats;
   stats.name = name;
@@ -112,10 +117,9 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
     }
   }
   stats.areaShareBelowMinArea = standingOut > 0 ? dropped / standingOut : 0;
-  const cv::Mat mask = stats.minArea == kNoiseArea || options.maskPath
-                           ? maskAtNoise
-                           : particleMask(linear, options, stats.minArea);
-  cv::Mat labels = detail::labelParticles(mask, options.split);
+  cv::Mat labels = stats.minArea == kNoiseArea || options.maskPath
+                       ? labelsAtNoise
+                       : detail::labelParticles(particleMask(linear, options, stats.minArea), options.split);
   detail::fillEnclosedHoles(labels);
   stats.particles = detail::measureParticles(labels, linear, stats.minArea);
   if (stats.particles.empty()) throw InputError(noParticlesMessage(stats, options));

@@ -227,3 +227,15 @@ TEST(ExitCodes, TwoRunsWriteTheSameBytes) {
   }
   EXPECT_GT(first.size(), 20u);
 }
+
+TEST(ExitCodes, AMinimumAreaThatDropsMostOfWhatStandsOutIsWarnedOf) {
+  const std::string gravel = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "particles" / "gravel.png");
+  const Outcome quiet = runSolidtex("analyze " + gravel);
+  EXPECT_EQ(quiet.exitCode, 0);
+  EXPECT_TRUE(quiet.errLines.empty());
+  const Outcome dropped = runSolidtex("analyze " + gravel + " --min-area 1000");
+  EXPECT_EQ(dropped.exitCode, 0);
+  ASSERT_EQ(dropped.errLines.size(), 1u);
+  EXPECT_EQ(dropped.errLines[0].rfind("solidtex: warning: ", 0), 0u) << dropped.errLines[0];
+  EXPECT_NE(dropped.errLines[0].find("(see --min-area)"), std::string::npos) << dropped.errLines[0];
+}
