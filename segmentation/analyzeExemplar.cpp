@@ -30,8 +30,7 @@ constexpr double kMinAreaFraction = 1e-4;
 constexpr double kMinAreaFloor = 8;
 // Under 4 pixels a region has no outline to speak of, whatever the photo: noise.
 constexpr double kNoiseArea = 4;
-// A region under an eighth of the photo's typical particle is a speck beside it. A photo of many
-// small particles lowers the default down to the noise floor by this rule.
+// A region under an eighth of the photo's typical particle is a speck beside it.
 constexpr double kTypicalShare = 1.0 / 8;
 
 // Areas of the labelled particles of at least kNoiseArea pixels.
@@ -59,8 +58,16 @@ double typicalArea(std::vector<int> areas) {
   return 0;
 }
 
+// The photo-size default, unless the particles under it hold most of what stands out (a photo of many
+// small particles): then an eighth of the typical particle, at least the noise floor.
 double defaultMinArea(const cv::Size& size, const std::vector<int>& areasAtNoise) {
   const double byPhoto = std::max(kMinAreaFloor, kMinAreaFraction * double(size.area()));
+  double all = 0, under = 0;
+  for (const int area : areasAtNoise) {
+    all += area;
+    if (area < byPhoto) under += area;
+  }
+  if (under <= 0.5 * all) return byPhoto;
   return std::clamp(kTypicalShare * typicalArea(areasAtNoise), kNoiseArea, byPhoto);
 }
 

@@ -13,8 +13,8 @@ struct SegmentationOptions {
   std::optional<std::string> maskPath;  ///< white = particle; replaces the automatic separation
   bool invert = false;  ///< swap what the automatic separation (or the mask) calls particle and background
   bool split = true;    ///< split touching particles (distance transform + watershed)
-  double minArea = -1;  ///< pixels; < 0: the photo's own (at most max(8, its area / 10000), at least 4,
-                        ///< an eighth of its typical particle below that)
+  double minArea = -1;  ///< pixels; < 0: max(8, the photo's area / 10000), or for a photo whose
+                        ///< particles are mostly smaller, an eighth of its typical particle (>= 4)
 };
 
 /// Segments the photo and measures every particle (paper 3.2-3.3, 3.6). Automatic separation:
