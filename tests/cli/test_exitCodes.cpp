@@ -214,7 +214,9 @@ TEST(ExitCodes, TwoRunsWriteTheSameBytes) {
           "compare " + kPhoto + " " + at("p.vdb") + " --plot " + at("cmp.png"),
           "spaciousness " + kPhoto + " --size 16 --plot " + at("sp.png"),
           "truth -o " + at("truth") + " --dims 64 64 32 --small-radius 3 --large-radius 6"}) {
-      ASSERT_EQ(runSolidtex(command).exitCode, 0) << command;
+      const Outcome outcome = runSolidtex(command);
+      ASSERT_EQ(outcome.exitCode, 0) << command << ": "
+                                     << (outcome.errLines.empty() ? "" : outcome.errLines.back());
     }
     for (const auto& entry : fs::recursive_directory_iterator(dir)) {
       if (!entry.is_regular_file()) continue;
