@@ -20,6 +20,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto arrangement = std::make_shared<std::string>("uniform");
   auto boundary = std::make_shared<std::string>("open");
   auto matrix = std::make_shared<std::string>("synthesized");
+  auto particleTexture = std::make_shared<std::string>("synthesized");
   CLI::App* command =
       app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
@@ -63,6 +64,12 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                    "The background between the particles: synthesized (a solid texture grown from the "
                    "photo's background, its particles filled) or projected (the paper's)")
       ->capture_default_str();
+  command
+      ->add_option("--particle-texture", *particleTexture,
+                   "The particles' insides: synthesized (a solid texture grown from the grain of the "
+                   "photo's particles, scaled to each one's) or projected (the paper's: its own pixels, "
+                   "projected along one direction)")
+      ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")
       ->capture_default_str();
   auto smoothing = std::make_shared<std::string>("auto");
@@ -87,23 +94,25 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
       "an object per particle)");
   command->add_flag("!--quiet", job->progress, "No progress line");
   addSegmentationOptions(*command, job->segmentation);
-  return [job, size, dims, placer, sizing, arrangement, boundary, matrix, smoothing, threads] {
-    job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
-    job->placer = parsePlacerKind(*placer);
-    job->sizing = parseSizing(*sizing);
-    job->arrangement = parseArrangement(*arrangement);
-    job->boundary = parseBoundary(*boundary);
-    job->matrix = parseMatrixTexture(*matrix);
-    job->smoothing = parseSmoothing(*smoothing);
-    const ThreadLimit limit(*threads);
-    const auto report = runParticleSolid(*job);
-    const auto& volume = report["volume"];
-    std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
-              << volume["volume_fraction"].get<double>() << " (photo "
-              << volume["area_fraction"].get<double>() << "), " << volume["stop_reason"].get<std::string>()
-              << '\n';
-    return 0;
-  };
+  return
+      [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing, threads] {
+        job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
+        job->placer = parsePlacerKind(*placer);
+        job->sizing = parseSizing(*sizing);
+        job->arrangement = parseArrangement(*arrangement);
+        job->boundary = parseBoundary(*boundary);
+        job->matrix = parseTexture("--matrix", *matrix);
+        job->particleTexture = parseTexture("--particle-texture", *particleTexture);
+        job->smoothing = parseSmoothing(*smoothing);
+        const ThreadLimit limit(*threads);
+        const auto report = runParticleSolid(*job);
+        const auto& volume = report["volume"];
+        std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
+                  << volume["volume_fraction"].get<double>() << " (photo "
+                  << volume["area_fraction"].get<double>() << "), "
+                  << volume["stop_reason"].get<std::string>() << '\n';
+        return 0;
+      };
 }
 
 }  // namespace solidtex::cli

@@ -128,14 +128,14 @@ Boundary parseBoundary(const std::string& name) {
   throw OptionError("unknown boundary '" + name + "': use open, walls or periodic");
 }
 
-MatrixTexture parseMatrixTexture(const std::string& name) {
-  if (name == "synthesized") return MatrixTexture::Synthesized;
-  if (name == "projected") return MatrixTexture::Projected;
-  throw OptionError("unknown matrix texture '" + name + "': use synthesized or projected");
+Texture parseTexture(const std::string& option, const std::string& name) {
+  if (name == "synthesized") return Texture::Synthesized;
+  if (name == "projected") return Texture::Projected;
+  throw OptionError(option + ": unknown texture '" + name + "': use synthesized or projected");
 }
 
-const char* matrixTextureName(MatrixTexture matrix) {
-  return matrix == MatrixTexture::Synthesized ? "synthesized" : "projected";
+const char* textureName(Texture texture) {
+  return texture == Texture::Synthesized ? "synthesized" : "projected";
 }
 
 const char* boundaryName(Boundary boundary) {
@@ -200,24 +200,27 @@ int matrixBlock(const Dims& dims, bool periodic) {
   return 0;
 }
 
-// The synthesised matrix, or none (projection) with the reason in the report.
-std::optional<TiledMatrix> makeMatrix(const ParticleSolidJob& job, const ExemplarStats& stats, double scale,
-                                      nlohmann::json& report) {
-  report = {{"texture", matrixTextureName(job.matrix)}};
-  if (job.matrix == MatrixTexture::Projected) return std::nullopt;
+using BlockSynthesis = std::optional<TiledMatrix> (*)(const ExemplarStats&, const MatrixSynthesisOptions&);
+
+// A synthesised block of one of the solid's textures (the matrix, the particles' grain), or none
+// (projection) with the reason in the report.
+std::optional<TiledMatrix> makeBlock(const ParticleSolidJob& job, Texture texture, BlockSynthesis synthesize,
+                                     const ExemplarStats& stats, double scale, std::uint64_t stream,
+                                     const char* tooLittle, nlohmann::json& report) {
+  report = {{"texture", textureName(texture)}};
+  if (texture == Texture::Projected) return std::nullopt;
   const int block = matrixBlock(job.dims, job.boundary == Boundary::Periodic);
   if (block < kMinMatrixBlock) {
     report = {{"texture", "projected"},
               {"reason", "no block of 16 to 64 voxels, a multiple of 4, tiles this volume"}};
     return std::nullopt;
   }
-  std::optional<TiledMatrix> matrix =
-      synthesizeMatrix(stats, {block, scale, deriveSeed(job.seed, 0x3A7B1C), 0});
-  if (!matrix)
-    report = {{"texture", "projected"}, {"reason", "the photo shows too little matrix to learn its texture"}};
+  std::optional<TiledMatrix> result = synthesize(stats, {block, scale, deriveSeed(job.seed, stream), 0});
+  if (!result)
+    report = {{"texture", "projected"}, {"reason", tooLittle}};
   else
     report["block"] = block;
-  return matrix;
+  return result;
 }
 
 constexpr int kSizingBootstraps = 8;  // a range of the size factor, at a fraction of the fit's time
@@ -306,7 +309,15 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   timer.start("matrix");
   progress.update("synthesizing the matrix");
   nlohmann::json matrixReport;
-  const std::optional<TiledMatrix> matrix = makeMatrix(job, stats, scale, matrixReport);
+  const std::optional<TiledMatrix> matrix =
+      makeBlock(job, job.matrix, synthesizeMatrix, stats, scale, 0x3A7B1C,
+                "the photo shows too little matrix to learn its texture", matrixReport);
+  timer.start("particle_grain");
+  progress.update("synthesizing the particles' grain");
+  nlohmann::json grainReport;
+  const std::optional<TiledMatrix> grain =
+      makeBlock(job, job.particleTexture, synthesizeParticleGrain, stats, scale, 0x6A17E5,
+                "the photo shows too little of its particles to learn their grain", grainReport);
 
   timer.start("color");
   progress.update("painting the particles");
@@ -317,8 +328,9 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                       {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
                        placed.origin.z + placed.box.z * 0.5},
                       placed.voxelsPerPixel});
-  SolidVolume volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale,
-                                          job.seed, periodic, matrix ? &*matrix : nullptr);
+  SolidVolume volume =
+      paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale, job.seed, periodic,
+                         matrix ? &*matrix : nullptr, grain ? &*grain : nullptr);
   volume.metadata = metadataOf(job, stats, placement, scale, sizing, smoothing.radius);
 
   std::vector<ParticleMesh> meshes;
@@ -347,6 +359,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
                            {"arrangement", arrangementName(job.arrangement)},
                            {"boundary", boundaryName(job.boundary)},
                            {"matrix", matrixReport},
+                           {"particle_texture", grainReport},
                            {"views", job.particles.views},
                            {"photo", toJson(stats)},
                            {"volume", placementJson(placement, stats, scale)},

@@ -26,15 +26,15 @@ enum class Boundary {
 Boundary parseBoundary(const std::string& name);
 const char* boundaryName(Boundary boundary);
 
-/// How the background between the particles (the matrix) is coloured.
-enum class MatrixTexture {
-  Synthesized,  ///< a periodic solid texture grown from the photo's matrix (chen-wang), tiled
-  Projected,    ///< the paper's: the photo's background residual projected along one direction
+/// How a part of the solid (the matrix between the particles, the particles' insides) is textured.
+enum class Texture {
+  Synthesized,  ///< a periodic solid texture grown from the photo's own (chen-wang), tiled
+  Projected,    ///< the paper's: the photo's residual projected along one direction
 };
 
-/// "synthesized" | "projected"; throws OptionError otherwise.
-MatrixTexture parseMatrixTexture(const std::string& name);
-const char* matrixTextureName(MatrixTexture matrix);
+/// "synthesized" | "projected" for `option` (named in the error); throws OptionError otherwise.
+Texture parseTexture(const std::string& option, const std::string& name);
+const char* textureName(Texture texture);
 
 /// `solidtex particles`: photo to particle solid (.vdb, report, previews).
 struct ParticleSolidJob {
@@ -48,7 +48,8 @@ struct ParticleSolidJob {
   Sizing sizing = Sizing::Sections;
   Arrangement arrangement = Arrangement::Uniform;
   Boundary boundary = Boundary::Open;
-  MatrixTexture matrix = MatrixTexture::Synthesized;
+  Texture matrix = Texture::Synthesized;
+  Texture particleTexture = Texture::Synthesized;  ///< the particles' insides
   ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
   std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;

@@ -3,13 +3,13 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config clang-format ccache
-  libopencv-dev libopencv-contrib-dev
+  libopencv-dev
   libopenvdb-dev libboost-iostreams-dev zlib1g-dev libblosc-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools libtiff-dev
   libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libfaiss-dev libblas-dev liblapack-dev
-  libgtest-dev
+  libgtest-dev valgrind
   pybind11-dev python3-dev python3-numpy python3-scipy python3-skimage
 )
 missing=()

@@ -4,14 +4,15 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "segmentation/matrixExemplar.h"
+#include "segmentation/textureExemplars.h"
 #include "synthesis/synthesizeSolid.h"
 
 namespace solidtex {
+namespace {
 
-std::optional<TiledMatrix> synthesizeMatrix(const ExemplarStats& stats,
-                                            const MatrixSynthesisOptions& options) {
-  cv::Mat exemplar = matrixExemplar(stats);
+// An exemplar grown into a periodic block by Chen and Wang's synthesis at the solid's scale.
+std::optional<TiledMatrix> growBlock(cv::Mat exemplar, const std::string& name,
+                                     const MatrixSynthesisOptions& options) {
   if (exemplar.empty()) return std::nullopt;
   if (options.voxelsPerPixel != 1) {
     const int side = std::max(1, int(std::lround(exemplar.cols * options.voxelsPerPixel)));
@@ -21,7 +22,7 @@ std::optional<TiledMatrix> synthesizeMatrix(const ExemplarStats& stats,
   synthesis.size = options.size;
   synthesis.seed = options.seed;
   synthesis.threads = options.threads;
-  synthesis.exemplarName = stats.name;
+  synthesis.exemplarName = name;
   // The coarsest level's exemplar and volume must hold its neighbourhood: fewer levels when small.
   const auto tooSmall = [&] {
     const int coarsest = synthesis.levels - 1, n = synthesis.neighborhoods.front();
@@ -33,6 +34,18 @@ std::optional<TiledMatrix> synthesizeMatrix(const ExemplarStats& stats,
   if (exemplar.cols < 2 * synthesis.neighborhoods.front()) return std::nullopt;
   SynthesisResult result = synthesizeSolid(exemplar, synthesis);
   return TiledMatrix{result.volume.dims, std::move(result.volume.color)};
+}
+
+}  // namespace
+
+std::optional<TiledMatrix> synthesizeMatrix(const ExemplarStats& stats,
+                                            const MatrixSynthesisOptions& options) {
+  return growBlock(matrixExemplar(stats), stats.name, options);
+}
+
+std::optional<TiledMatrix> synthesizeParticleGrain(const ExemplarStats& stats,
+                                                   const MatrixSynthesisOptions& options) {
+  return growBlock(particleExemplar(stats), stats.name, options);
 }
 
 }  // namespace solidtex

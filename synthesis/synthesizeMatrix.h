@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The matrix between a particle solid's particles, synthesised from the photo's own matrix.
+/// The textures of a particle solid synthesised from the photo's own: the matrix between the
+/// particles and the grain inside them.
 
 #include <cstdint>
 #include <optional>
@@ -23,5 +24,11 @@ struct MatrixSynthesisOptions {
 /// which tiles seamlessly. Empty when the photo shows too little matrix for an exemplar.
 std::optional<TiledMatrix> synthesizeMatrix(const ExemplarStats& stats,
                                             const MatrixSynthesisOptions& options);
+
+/// A periodic block of the particles' grain about a mid grey (linear 0.5), without their colours:
+/// particleExemplar grown into a solid the same way, for painting the particles' insides with a
+/// texture that has no direction. Empty when the photo shows too little particle for an exemplar.
+std::optional<TiledMatrix> synthesizeParticleGrain(const ExemplarStats& stats,
+                                                   const MatrixSynthesisOptions& options);
 
 }  // namespace solidtex

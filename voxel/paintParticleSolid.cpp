@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -10,6 +11,7 @@
 
 #include "common/Random.h"
 #include "common/randomDirection.h"
+#include "segmentation/particleShading.h"
 
 namespace solidtex {
 namespace {
@@ -159,11 +161,64 @@ Eigen::Vector3d offsetFrom(const std::array<double, 3>& c, const Eigen::Vector3d
   return d;
 }
 
+// The particles' insides from a grain block: each photo particle's residual split into its shading,
+// which is projected as the residual was (smooth, it draws no stripes), and its grain, replaced by
+// the block's deviation from its mean laid at an offset of each particle's own (so no two show the
+// same piece) and scaled by the ratio of the source's grain spread to the block's.
+class ParticleGrain {
+public:
+  ParticleGrain(const TiledMatrix& block, const ExemplarStats& stats,
+                const std::vector<ParticlePaint>& particles, Rng& rng)
+      : block_(block) {
+    double sum[3] = {0, 0, 0}, squares = 0;
+    for (const Rgb& c : block.color)
+      for (int k = 0; k < 3; ++k) sum[k] += c[std::size_t(k)];
+    const double n = double(block.color.size());
+    for (int k = 0; k < 3; ++k) mean_[std::size_t(k)] = float(sum[k] / n);
+    for (const Rgb& c : block.color)
+      for (int k = 0; k < 3; ++k) squares += std::pow(c[std::size_t(k)] - mean_[std::size_t(k)], 2);
+    const double blockSpread = std::sqrt(squares / (3 * n));
+    std::vector<float> sourceContrast;
+    for (const Particle2D& source : stats.particles) {
+      ResidualScales scales = splitResidual(source);
+      const double spread =
+          std::sqrt(cv::norm(scales.grain, cv::NORM_L2SQR) / (3 * std::max(1.0, source.area)));
+      sourceContrast.push_back(blockSpread > 0 ? float(spread / blockSpread) : 0.f);
+      shading_.push_back(std::move(scales.shading));
+    }
+    for (const ParticlePaint& particle : particles) {
+      contrast_.push_back(sourceContrast[std::size_t(particle.source)]);
+      offsets_.push_back({int(uniformIndex(rng, std::uint64_t(block.dims.x))),
+                          int(uniformIndex(rng, std::uint64_t(block.dims.y))),
+                          int(uniformIndex(rng, std::uint64_t(block.dims.z)))});
+    }
+  }
+
+  /// The residual to project for a photo particle: its shading.
+  const cv::Mat& shading(int source) const { return shading_[std::size_t(source)]; }
+
+  cv::Vec3f at(std::size_t particle, int x, int y, int z) const {
+    const std::array<int, 3>& o = offsets_[particle];
+    const Rgb& c = block_.color[block_.dims.index((x + o[0]) % block_.dims.x, (y + o[1]) % block_.dims.y,
+                                                  (z + o[2]) % block_.dims.z)];
+    const float k = contrast_[particle];
+    return {k * (c[0] - mean_[0]), k * (c[1] - mean_[1]), k * (c[2] - mean_[2])};
+  }
+
+private:
+  const TiledMatrix& block_;
+  Rgb mean_{};
+  std::vector<cv::Mat> shading_;
+  std::vector<float> contrast_;
+  std::vector<std::array<int, 3>> offsets_;
+};
+
 }  // namespace
 
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic, const TiledMatrix* matrix) {
+                               std::uint64_t seed, bool periodic, const TiledMatrix* matrix,
+                               const TiledMatrix* grain) {
   SolidVolume volume;
   volume.dims = dims;
   volume.particleId = std::move(ids);
@@ -176,6 +231,8 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
   projections.reserve(particles.size());
   for (const ParticlePaint& particle : particles)
     projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
+  std::optional<ParticleGrain> particleGrain;
+  if (grain) particleGrain.emplace(*grain, stats, particles, rng);
   const cv::Mat filled = matrix ? cv::Mat() : fillParticleHoles(stats);
   const BackgroundResidual backgroundResidual(filled, background, dims, periodic && !matrix);
 
@@ -193,15 +250,16 @@ SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vecto
         }
         const ParticlePaint& particle = particles[std::size_t(id - 1)];
         const Particle2D& source = stats.particles[std::size_t(particle.source)];
+        const cv::Mat& residual = particleGrain ? particleGrain->shading(particle.source) : source.residual;
         const Projection& proj = projections[std::size_t(id - 1)];
         // Project about the particle's centre onto the centre of its photo particle's box.
         const Eigen::Vector3d local = offsetFrom(particle.centre, p, dims, periodic);
-        const int c =
-            std::clamp(int(source.residual.cols * 0.5 + local.dot(proj.u)), 0, source.residual.cols - 1);
-        const int r =
-            std::clamp(int(source.residual.rows * 0.5 + local.dot(proj.v)), 0, source.residual.rows - 1);
+        const int c = std::clamp(int(residual.cols * 0.5 + local.dot(proj.u)), 0, residual.cols - 1);
+        const int r = std::clamp(int(residual.rows * 0.5 + local.dot(proj.v)), 0, residual.rows - 1);
         // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
-        volume.color[idx] = clamp01(source.color + source.residual.at<cv::Vec3f>(r, c));
+        cv::Vec3f colour = source.color + residual.at<cv::Vec3f>(r, c);
+        if (particleGrain) colour += particleGrain->at(std::size_t(id - 1), x, y, z);
+        volume.color[idx] = clamp01(colour);
       }
   });
   return volume;

@@ -36,9 +36,13 @@ struct TiledMatrix {
 /// With a `matrix`, each background voxel takes the matrix's colour instead (tiled, so a volume
 /// whose sides are multiples of the block's stays periodic): the background then has the photo's
 /// matrix texture in every direction, where a projection draws streaks along its direction.
+/// With a `grain` (a block of the particles' grain about its mean, synthesizeParticleGrain), only
+/// the shading of a particle's residual is projected (splitResidual: smooth, it draws no stripes);
+/// its grain is the block's deviation, laid at an offset of the particle's own and scaled to its
+/// source's grain spread. Projected whole, the grain draws stripes across every slice but one.
 SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
                                const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic = false,
-                               const TiledMatrix* matrix = nullptr);
+                               std::uint64_t seed, bool periodic = false, const TiledMatrix* matrix = nullptr,
+                               const TiledMatrix* grain = nullptr);
 
 }  // namespace solidtex

@@ -101,9 +101,9 @@ GrainStatistics photoGrain(const SandPhoto& photo) {
   return g;
 }
 
-GrainStatistics solidGrain(MatrixTexture matrix, const fs::path& photoPath, nlohmann::json& report) {
+GrainStatistics solidGrain(Texture matrix, const fs::path& photoPath, nlohmann::json& report) {
   const fs::path output =
-      test::scratchPath("pipeline_test", std::string("sand-") + matrixTextureName(matrix) + ".vdb");
+      test::scratchPath("pipeline_test", std::string("sand-") + textureName(matrix) + ".vdb");
   ParticleSolidJob job;
   job.photo = photoPath.string();
   job.output = output.string();
@@ -126,13 +126,13 @@ TEST(MatrixTexture, SynthesizedMatrixHasThePhotosGrainInEveryDirection) {
   const GrainStatistics truth = photoGrain(photo);
 
   nlohmann::json report;
-  const GrainStatistics synthesized = solidGrain(MatrixTexture::Synthesized, photoPath, report);
+  const GrainStatistics synthesized = solidGrain(Texture::Synthesized, photoPath, report);
   EXPECT_EQ(report["matrix"]["texture"], "synthesized");
   EXPECT_NEAR(synthesized.mean, truth.mean, 0.02);
   EXPECT_NEAR(synthesized.spread / truth.spread, 1.0, 0.25);
   for (double step : synthesized.step) EXPECT_NEAR(step / truth.step[0], 1.0, 0.3);
 
-  const GrainStatistics projected = solidGrain(MatrixTexture::Projected, photoPath, report);
+  const GrainStatistics projected = solidGrain(Texture::Projected, photoPath, report);
   EXPECT_EQ(report["matrix"]["texture"], "projected");
   // Each axis' step against the photo's: the synthesised matrix is the nearer on its worst axis
   // (measured: 5 % off against 25 %).
