@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Particle solids of real photos judged by looking like the photo: each photo is cut into its left
 # and right halves; the left half is the exemplar, the right half the second photo. The particle
-# solid (defaults, SIZE^3), the same with the paper's projected insides (--particle-texture
-# projected) and a chen-wang solid (SIZE^3) are made from the left half, and each is
+# solid (defaults, SIZE^3), the same with synthesized insides (--particle-texture
+# synthesized) and a chen-wang solid (SIZE^3) are made from the left half, and each is
 # rated by `compare --mode continuous --reference right` (patch distance over the right half's, on
 # axis and oblique slices: 1.0 is "as close as another photo"). Prints a Markdown table; with
 # PREVIEWS=DIR also leaves each photo's previews there.
@@ -13,7 +13,7 @@ shift
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-echo "| photo | particles (photo / solid fraction) | particle solid: patch distance ratio axis / oblique | projected insides | chen-wang: axis / oblique | matrix | seconds (particles / chen-wang) |"
+echo "| photo | particles (photo / solid fraction) | particle solid: patch distance ratio axis / oblique | synthesized insides | chen-wang: axis / oblique | matrix | seconds (particles / chen-wang) |"
 echo "|---|---|---|---|---|---|---|"
 for photo in "$@"; do
   name=$(basename "$photo" .png)
@@ -25,7 +25,7 @@ for photo in "$@"; do
   [ -n "${PREVIEWS:-}" ] && preview=(--preview "$PREVIEWS/$name")
   "$bin" particles "$out/left.png" -o "$out/p.vdb" --size "$size" --report "$out/p.json" "${preview[@]}" --quiet > /dev/null
   "$bin" compare "$out/left.png" "$out/p.vdb" --mode continuous --reference "$out/right.png" --report "$out/pc.json" > /dev/null
-  "$bin" particles "$out/left.png" -o "$out/q.vdb" --size "$size" --particle-texture projected --quiet > /dev/null
+  "$bin" particles "$out/left.png" -o "$out/q.vdb" --size "$size" --particle-texture synthesized --quiet > /dev/null
   "$bin" compare "$out/left.png" "$out/q.vdb" --mode continuous --reference "$out/right.png" --report "$out/qc.json" > /dev/null
   "$bin" synthesize "$out/left.png" -o "$out/s.vdb" --size "$size" --report "$out/s.json" --quiet > /dev/null
   "$bin" compare "$out/left.png" "$out/s.vdb" --reference "$out/right.png" --report "$out/sc.json" > /dev/null

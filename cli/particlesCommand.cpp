@@ -20,7 +20,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto arrangement = std::make_shared<std::string>("uniform");
   auto boundary = std::make_shared<std::string>("open");
   auto matrix = std::make_shared<std::string>("synthesized");
-  auto particleTexture = std::make_shared<std::string>("synthesized");
+  auto particleTexture = std::make_shared<std::string>("projected");
   CLI::App* command =
       app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
   command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
@@ -65,10 +65,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                    "photo's background, its particles filled) or projected (the paper's)")
       ->capture_default_str();
   command
-      ->add_option("--particle-texture", *particleTexture,
-                   "The particles' insides: synthesized (a solid texture grown from the grain of the "
-                   "photo's particles, scaled to each one's) or projected (the paper's: its own pixels, "
-                   "projected along one direction)")
+      ->add_option(
+          "--particle-texture", *particleTexture,
+          "The particles' insides: projected (the paper's: each one's own pixels, projected along one "
+          "direction) or synthesized (its shading projected, its grain from a solid texture grown "
+          "from the photo's particles: no stripes)")
       ->capture_default_str();
   command->add_option("--views", job->particles.views, "Contours per visual hull (3-5)")
       ->capture_default_str();

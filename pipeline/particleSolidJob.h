@@ -49,7 +49,7 @@ struct ParticleSolidJob {
   Arrangement arrangement = Arrangement::Uniform;
   Boundary boundary = Boundary::Open;
   Texture matrix = Texture::Synthesized;
-  Texture particleTexture = Texture::Synthesized;  ///< the particles' insides
+  Texture particleTexture = Texture::Projected;  ///< the particles' insides
   ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
   std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;
