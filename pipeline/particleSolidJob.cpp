@@ -206,9 +206,11 @@ using BlockSynthesis = std::optional<TiledMatrix> (*)(const ExemplarStats&, cons
 // (projection) with the reason in the report.
 std::optional<TiledMatrix> makeBlock(const ParticleSolidJob& job, Texture texture, BlockSynthesis synthesize,
                                      const ExemplarStats& stats, double scale, std::uint64_t stream,
-                                     const char* tooLittle, nlohmann::json& report) {
+                                     const char* tooLittle, ProgressLine& progress, const char* step,
+                                     nlohmann::json& report) {
   report = {{"texture", textureName(texture)}};
   if (texture == Texture::Projected) return std::nullopt;
+  progress.update(step);
   const int block = matrixBlock(job.dims, job.boundary == Boundary::Periodic);
   if (block < kMinMatrixBlock) {
     report = {{"texture", "projected"},
@@ -307,17 +309,17 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   progress.done();
 
   timer.start("matrix");
-  progress.update("synthesizing the matrix");
   nlohmann::json matrixReport;
   const std::optional<TiledMatrix> matrix =
       makeBlock(job, job.matrix, synthesizeMatrix, stats, scale, 0x3A7B1C,
-                "the photo shows too little matrix to learn its texture", matrixReport);
+                "the photo shows too little matrix to learn its texture", progress, "synthesizing the matrix",
+                matrixReport);
   timer.start("particle_grain");
-  progress.update("synthesizing the particles' grain");
   nlohmann::json grainReport;
   const std::optional<TiledMatrix> grain =
       makeBlock(job, job.particleTexture, synthesizeParticleGrain, stats, scale, 0x6A17E5,
-                "the photo shows too little of its particles to learn their grain", grainReport);
+                "the photo shows too little of its particles to learn their grain", progress,
+                "synthesizing the particles' grain", grainReport);
 
   timer.start("color");
   progress.update("painting the particles");
