@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/memoryBudget.h"
 #include "common/srgb.h"
 #include "pipeline/jobSupport.h"
 #include "pipeline/synthesizeJob.h"

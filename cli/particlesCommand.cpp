@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/optionChecks.h"
+#include "common/ThreadLimit.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
@@ -90,7 +91,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                       "Folder for preview PNGs (middle and oblique slices beside the photo)");
   addExportOptions(*command, job->exports);
   command->add_option(
-      "--meshes", job->meshes,
+      "--meshes", job->meshPath,
       "The particles' surfaces: OUT.ply (vertex colours, particle ids) or OUT.obj (+ OUT.mtl, "
       "an object per particle)");
   command->add_flag("!--quiet", job->progress, "No progress line");

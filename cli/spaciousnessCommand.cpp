@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "common/ThreadLimit.h"
 #include "pipeline/jobSupport.h"
 #include "pipeline/spaciousnessJob.h"
 

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "common/Grid.h"
+
 namespace solidtex {
 
 /// Bytes this process may still allocate: the least of the system's available memory, the
@@ -20,6 +22,15 @@ std::uint64_t parseMemorySize(const std::string& text);
 /// Throws InputError "`what` needs N GiB of memory, M GiB available" when `bytes` exceed
 /// availableMemoryBytes(). Callers pass an estimate of their peak before allocating it.
 void requireMemory(const std::string& what, double bytes);
+
+/// Refuses (InputError), before any of it is allocated, a volume of `dims` that needs more memory
+/// than there is: `bytesPerVoxel` is the work's measured peak per voxel (docs/performance.md),
+/// plus what every run holds (libraries, the photo). Also refuses (OptionError) more voxels than
+/// 32-bit indices reach.
+void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel);
+
+/// Peak resident memory of this process so far, in MiB.
+double peakMemoryMiB();
 
 /// Lets allocations of this process fail (std::bad_alloc) once it maps `bytes` more than when the
 /// cap was made, until the cap is destroyed: third-party code given damaged input can ask for

@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "common/interruption.h"
 #include "particles/rotation.h"
 #include "particles/visualHull.h"
 #include "particles/voxelizeHull.h"
@@ -71,6 +72,7 @@ std::optional<HullMesh> tryHull(const ExemplarStats& stats, const std::vector<in
 HullMesh buildHull(const ExemplarStats& stats, const std::vector<int>& sources,
                    const ParticleOptions& options, int index) {
   Rng rng(deriveSeed(options.seed, std::uint64_t(index)));
+  checkInterruption();
   for (int attempt = 0; attempt < kAttemptsPerHull; ++attempt)
     if (std::optional<HullMesh> hull = tryHull(stats, sources, options, rng)) return std::move(*hull);
   throw InputError("the photo's particle contours do not overlap enough to carve 3D particle shapes");
@@ -184,6 +186,7 @@ ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {
 }
 
 VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) const {
+  checkInterruption();
   const std::size_t hull = uniformIndex(rng, hulls_.size());
   VoxelShape shape = voxelize(hulls_[hull], randomRotation(rng), width, height, depth);
   shape.pose.hull = int(hull);

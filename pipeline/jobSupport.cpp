@@ -1,17 +1,12 @@
 #include "pipeline/jobSupport.h"
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include <tbb/info.h>
-
 #include "common/Error.h"
-#include "common/memoryBudget.h"
-#include "common/secondsSince.h"
 #include "common/writeFileBytes.h"
 
 namespace solidtex {
@@ -34,48 +29,6 @@ void addVolumeOutputs(OutputFiles& outputs, const std::string& vdb, const std::o
 
 void writeReport(OutputFiles& outputs, const std::optional<std::string>& report, const nlohmann::json& json) {
   if (report) outputs.write(*report, [&](const std::string& path) { writeJsonFile(path, json); });
-}
-
-void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel) {
-  constexpr double kEveryRun = 160.0 * 1024 * 1024;
-  if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0) return;  // the command's own checks say what is wrong
-  const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
-  const std::string size =
-      std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
-  if (voxels > 4294967295.0)
-    throw OptionError(what + " of " + size + " voxels: more than 2^32 - 1 voxels, the most a volume holds");
-  requireMemory(what + " of " + size + " voxels", voxels * bytesPerVoxel + kEveryRun);
-}
-
-double peakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
-}
-
-namespace {
-
-std::size_t checkedThreads(int threads) {
-  if (threads < 0) throw OptionError("--threads must not be negative (0 = all cores)");
-  return std::size_t(threads > 0 ? threads : tbb::info::default_concurrency());
-}
-
-}  // namespace
-
-ThreadLimit::ThreadLimit(int threads)
-    : control_(tbb::global_control::max_allowed_parallelism, checkedThreads(threads)) {}
-
-void PhaseTimer::start(const std::string& name) {
-  const auto now = Clock::now();
-  if (!current_.empty()) phases_[current_] = std::chrono::duration<double>(now - phaseBegin_).count();
-  current_ = name;
-  phaseBegin_ = now;
-}
-
-nlohmann::json PhaseTimer::finish() {
-  start("");
-  phases_["total"] = secondsSince(begin_);
-  return phases_;
 }
 
 std::string progressText(const std::string& step, double fraction, double secondsLeft) {

@@ -3,7 +3,6 @@
 #include <optional>
 #include <string>
 
-#include <tbb/global_control.h>
 #include <nlohmann/json.hpp>
 
 #include "common/Grid.h"
@@ -23,39 +22,6 @@ void addVolumeOutputs(OutputFiles& outputs, const std::string& vdb, const std::o
 
 /// Writes the report, when asked for, through `outputs`.
 void writeReport(OutputFiles& outputs, const std::optional<std::string>& report, const nlohmann::json& json);
-
-/// Refuses (InputError), before any of it is allocated, a volume of `dims` that needs more memory
-/// than there is: `bytesPerVoxel` is the command's measured peak per voxel (docs/performance.md),
-/// plus what every run holds (libraries, the photo). Also refuses more voxels than 32-bit indices
-/// reach.
-void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel);
-
-/// Peak resident memory of this process so far, in MiB.
-double peakMemoryMiB();
-
-/// Sets the number of worker threads for the rest of the process (0 = all cores).
-class ThreadLimit {
-public:
-  explicit ThreadLimit(int threads);
-
-private:
-  tbb::global_control control_;
-};
-
-/// Wall time of named phases, collected into a report.
-class PhaseTimer {
-public:
-  /// Ends the running phase (if any) and starts `name`.
-  void start(const std::string& name);
-  /// Ends the running phase; returns {phase: seconds, ..., "total": seconds}.
-  nlohmann::json finish();
-
-private:
-  using Clock = std::chrono::steady_clock;
-  nlohmann::json phases_ = nlohmann::json::object();
-  std::string current_;
-  Clock::time_point begin_ = Clock::now(), phaseBegin_ = begin_;
-};
 
 /// A progress line on stderr. On a terminal it rewrites itself: the step, a bar, the share done and
 /// an estimate of the time left; in a log it prints a plain line with the percentage every ten

@@ -1,9 +1,10 @@
 #include "pipeline/spaciousnessJob.h"
 
 #include "common/Error.h"
+#include "common/memoryBudget.h"
+#include "particleSolid/makeParticleSolid.h"
 #include "particles/ParticleFactory.h"
 #include "pipeline/jobSupport.h"
-#include "pipeline/particleSolidJob.h"
 #include "pipeline/spaciousnessPlot.h"
 #include "placement/placeLargestFirst.h"
 #include "segmentation/imageIO.h"

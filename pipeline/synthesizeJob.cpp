@@ -6,6 +6,7 @@
 
 #include "Version.h"
 #include "common/Error.h"
+#include "common/memoryBudget.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"

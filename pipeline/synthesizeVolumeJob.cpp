@@ -8,6 +8,8 @@
 
 #include "Version.h"
 #include "common/Error.h"
+#include "common/ThreadLimit.h"
+#include "common/memoryBudget.h"
 #include "common/srgb.h"
 #include "pipeline/jobSupport.h"
 #include "voxel/vdbIO.h"

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "common/Error.h"
+#include "common/memoryBudget.h"
 #include "pipeline/jobSupport.h"
 #include "segmentation/imageIO.h"
 #include "voxel/vdbIO.h"

@@ -1,6 +1,6 @@
-// The Python module: each function runs the command of the same name through the command line's
-// own parser and job, so options, checks, messages and the .vdb's bytes are the CLI's, and hands
-// back what the command wrote (the report as a dict, the volume as numpy arrays).
+// The Python module. particles() and analyze() call the library (a numpy image or a path in, numpy
+// arrays and the report out, no file unless asked for); synthesize() and compare() still run the
+// command of the same name through the command line's parser and job and read back what it wrote.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -14,12 +14,24 @@
 #include <mutex>
 #include <new>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include "cli/application.h"
 #include "cli/commandLine.h"
 #include "common/Error.h"
+#include "common/OutputFiles.h"
+#include "common/ThreadLimit.h"
+#include "common/interruption.h"
+#include "common/memoryBudget.h"
+#include "particleSolid/makeParticleSolid.h"
+#include "particleSolid/particleSolidReport.h"
+#include "pipeline/jobSupport.h"
+#include "python/keywords.h"
+#include "segmentation/drawLabels.h"
+#include "segmentation/imageIO.h"
+#include "segmentation/reportJson.h"
 #include "voxel/vdbIO.h"
 
 namespace py = pybind11;
@@ -197,31 +209,252 @@ py::object runReportCommand(const std::string& command, const std::vector<std::s
   return readJson(report);
 }
 
+/// Raised from a progress report when Python has a signal to handle (Ctrl-C): the work unwinds and
+/// the pending KeyboardInterrupt is raised in its place.
+struct Interrupted {};
+
+/// Python's signals (Ctrl-C), looked at between units of the library's work.
+void checkSignals() {
+  const py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() != 0) throw Interrupted{};
+}
+
+/// A library message names options as the command line spells them (--min-area); Python's
+/// keywords are min_area.
+std::string asKeywords(std::string message) {
+  static const std::regex flag("--([a-z]+(-[a-z]+)*)");
+  std::string result;
+  std::sregex_iterator it(message.begin(), message.end(), flag), end;
+  std::size_t from = 0;
+  for (; it != end; ++it) {
+    std::string name = (*it)[1].str();
+    std::replace(name.begin(), name.end(), '-', '_');
+    result += message.substr(from, std::size_t(it->position()) - from) + name;
+    from = std::size_t(it->position() + it->length());
+  }
+  return result + message.substr(from);
+}
+
+/// Runs `work` with the GIL released, one library call at a time (OutputFiles and the thread limit
+/// are process-wide), and raises what it threw as Python does: ValueError for options out of
+/// range, solidtex.Error for input it cannot use, MemoryError, KeyboardInterrupt.
+template <typename Work>
+void runReleased(Work&& work) {
+  std::optional<std::string> usage, failure;
+  bool outOfMemory = false, interrupted = false;
+  {
+    py::gil_scoped_release released;
+    const std::lock_guard<std::mutex> oneAtATime(commandMutex);
+    const InterruptionCheck interruptible(checkSignals);
+    try {
+      work();
+    } catch (const Interrupted&) {
+      interrupted = true;
+    } catch (const OptionError& e) {
+      usage = asKeywords(e.what());
+    } catch (const std::bad_alloc&) {
+      outOfMemory = true;
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  }
+  if (interrupted) throw py::error_already_set();
+  if (usage) throw py::value_error(*usage);
+  if (outOfMemory) throw std::bad_alloc();
+  if (failure) {
+    PyErr_SetString(errorType->ptr(), failure->c_str());
+    throw py::error_already_set();
+  }
+}
+
+/// Reads keyword values into options: a value the library refuses (an unknown placer) is a
+/// ValueError naming the keyword.
+template <typename Parse>
+void runParsing(Parse&& parse) {
+  try {
+    parse();
+  } catch (const py::builtin_exception&) {
+    throw;
+  } catch (const InputError& e) {
+    throw py::value_error(asKeywords(e.what()));
+  }
+}
+
+/// A photo given as a path (read as the command line reads it) or as a numpy array (H, W), (H, W, 3)
+/// or (H, W, 4), uint8 or float in [0, 1] (sRGB). `name` labels it in reports.
+cv::Mat photoOf(const py::handle& photo, std::string& name) {
+  if (const std::optional<std::string> path = asPath(photo)) {
+    name = *path;
+    cv::Mat image;
+    runReleased([&] { image = loadPhoto(*path); });
+    return image;
+  }
+  if (!py::isinstance<py::array>(photo))
+    throw py::type_error("photo must be a path (str or os.PathLike) or a numpy array, not " +
+                         std::string(py::str(py::type::handle_of(photo).attr("__name__"))));
+  name = "array";
+  const auto array = py::reinterpret_borrow<py::array>(photo);
+  if (array.ndim() != 2 && array.ndim() != 3)
+    throw py::value_error("photo must have the shape (height, width) or (height, width, channels)");
+  const int channels = array.ndim() == 2 ? 1 : int(array.shape(2));
+  const bool bytes = array.dtype().is(py::dtype::of<std::uint8_t>());
+  if (!bytes && array.dtype().kind() != 'f') throw py::value_error("photo must be uint8, or float in [0, 1]");
+  const py::array pixels =
+      bytes ? py::array(py::array_t<std::uint8_t, py::array::c_style>::ensure(array))
+            : py::array(py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array));
+  cv::Mat image;
+  runReleased([&] {
+    image = photoFromPixels(pixels.data(), bytes ? PixelType::UInt8 : PixelType::Float32, int(array.shape(1)),
+                            int(array.shape(0)), channels, name);
+  });
+  return image;
+}
+
+/// A numpy array that owns `values` (moved, not copied), shaped `shape`.
+template <typename T>
+py::array_t<T> ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+  auto* owned = new std::vector<T>(std::move(values));
+  const py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(shape, owned->data(), free);
+}
+
+py::object toPython(const nlohmann::json& json) {
+  return py::module_::import("json").attr("loads")(json.dump());
+}
+
+SegmentationOptions segmentationOptions(Keywords& keywords) {
+  SegmentationOptions options;
+  options.maskPath = keywords.path("mask");
+  options.invert = keywords.flag("invert").value_or(false);
+  options.split = keywords.flag("split").value_or(true);
+  options.minArea = keywords.number("min_area").value_or(-1);
+  return options;
+}
+
+ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
+  ParticleSolidOptions options;
+  options.segmentation = segmentationOptions(keywords);
+  const int size = int(keywords.integer("size").value_or(128));
+  options.dims = {size, size, size};
+  if (const auto dims = keywords.integers("dims", 3)) options.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
+  options.voxelsPerPixel = keywords.number("scale").value_or(0);
+  options.placer = parsePlacerKind(keywords.text("placer").value_or("edt"));
+  options.sizing = parseSizing(keywords.text("sizing").value_or("sections"));
+  options.arrangement = parseArrangement(keywords.text("arrangement").value_or("uniform"));
+  options.boundary = parseBoundary(keywords.text("boundary").value_or("open"));
+  options.matrix = parseTexture("matrix", keywords.text("matrix").value_or("synthesized"));
+  options.particleTexture =
+      parseTexture("particle_texture", keywords.text("particle_texture").value_or("projected"));
+  options.particles.views = int(keywords.integer("views").value_or(options.particles.views));
+  options.particles.shapes = int(keywords.integer("shapes").value_or(options.particles.shapes));
+  options.smoothing = keywords.number("smoothing");
+  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  return options;
+}
+
+/// particles(photo, **options): the solid's arrays and report; a .vdb and a report file only when
+/// output= and report= are given.
+py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
+  Keywords keywords("particles", kwargs);
+  ParticleSolidOptions options;
+  runParsing([&] { options = particleSolidOptions(keywords); });
+  const int threads = int(keywords.integer("threads").value_or(0));
+  const std::optional<std::string> output = keywords.path("output"), reportPath = keywords.path("report");
+  const bool progress = keywords.flag("progress").value_or(false);
+  keywords.finish();
+  std::string name;
+  const cv::Mat image = photoOf(photo, name);
+  ParticleSolid solid;
+  nlohmann::json report;
+  runReleased([&] {
+    const ThreadLimit limit(threads);
+    ProgressLine line(progress);
+    std::optional<OutputFiles> outputs;
+    if (output || reportPath) {
+      outputs.emplace();
+      if (name != "array") outputs->addInput(name);
+      if (output) outputs->addFile("output", *output, {".vdb"});
+      if (reportPath) outputs->addFile("report", *reportPath, {".json"});
+    }
+    solid = makeParticleSolid(image, name, options, [&line](const std::string& step, double fraction) {
+      line.update(step, fraction);
+      checkInterruption();
+    });
+    line.done();
+    report = particleSolidReport(solid, options);
+    report["time_seconds"] = solid.timer.finish();
+    report["peak_memory_mib"] = peakMemoryMiB();
+    if (!outputs) return;
+    solid.volume.metadata = particleSolidMetadata(solid, options, "solidtex.particles (Python)");
+    if (output) outputs->write(*output, [&](const std::string& path) { writeVdb(path, solid.volume); });
+    if (reportPath)
+      outputs->write(*reportPath, [&](const std::string& path) { writeJsonFile(path, report); });
+    outputs->commit();
+  });
+  const Dims d = solid.volume.dims;
+  std::vector<float> rgb(solid.volume.color.size() * 3);
+  for (std::size_t i = 0; i < solid.volume.color.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = solid.volume.color[i][c];
+  solid.volume.color = {};
+  py::dict result;
+  result["particle_id"] = ownedArray(std::move(solid.volume.particleId), {d.z, d.y, d.x});
+  result["color"] = ownedArray(std::move(rgb), {d.z, d.y, d.x, 3});
+  result["report"] = toPython(report);
+  return result;
+}
+
+/// analyze(photo, **options): the photo's particle statistics as a dict; the outlined photo as
+/// labels= (a PNG) when asked.
+py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
+  Keywords keywords("analyze", kwargs);
+  const SegmentationOptions options = segmentationOptions(keywords);
+  const std::optional<std::string> labels = keywords.path("labels"), reportPath = keywords.path("report");
+  keywords.finish();
+  std::string name;
+  const cv::Mat image = photoOf(photo, name);
+  nlohmann::json report;
+  runReleased([&] {
+    std::optional<OutputFiles> outputs;
+    if (labels || reportPath) {
+      outputs.emplace();
+      if (name != "array") outputs->addInput(name);
+      if (labels) outputs->addFile("labels", *labels, {".png"});
+      if (reportPath) outputs->addFile("report", *reportPath, {".json"});
+    }
+    const ExemplarStats stats = analyzeExemplar(image, name, options);
+    report = toJson(stats);
+    if (!outputs) return;
+    if (labels)
+      outputs->write(*labels, [&](const std::string& path) { writeImage(path, drawLabels(image, stats)); });
+    if (reportPath)
+      outputs->write(*reportPath, [&](const std::string& path) { writeJsonFile(path, report); });
+    outputs->commit();
+  });
+  return toPython(report);
+}
+
 }  // namespace
 }  // namespace solidtex::python
 
 PYBIND11_MODULE(solidtex, m) {
   using namespace solidtex::python;
   m.doc() =
-      "solidtex: one photo of a material in, a 3D solid texture out. Each function runs the "
-      "command of the same name with the same options (size=64 is --size 64, no_split=True "
-      "is --no-split) and returns what it wrote.";
+      "solidtex: one photo of a material in, a 3D solid texture out. particles and analyze take a "
+      "numpy image or a path and return arrays and dicts; synthesize and compare run the command "
+      "of the same name with the same options (size=64 is --size 64) and return what it wrote.";
   errorType = new py::object(py::exception<std::runtime_error>(m, "Error", PyExc_RuntimeError));
-  m.def(
-      "analyze",
-      [](const std::string& photo, py::kwargs kwargs) {
-        return runReportCommand("analyze", {photo}, kwargs);
-      },
-      py::arg("photo"),
-      "Segments a photo of particles: its report (particles, area fraction, area histogram) as a dict.");
-  m.def(
-      "particles",
-      [](const std::string& photo, std::optional<std::string> output, py::kwargs kwargs) {
-        return runVolumeCommand("particles", {photo}, output, kwargs);
-      },
-      py::arg("photo"), py::arg("output") = py::none(),
-      "Makes a particle solid: a dict of numpy arrays color (Z,Y,X,3 linear RGB), particle_id (Z,Y,X) "
-      "and report (a dict). output: also keep the .vdb there, byte for byte the CLI's.");
+  m.def("analyze", &analyze, py::arg("photo"),
+        "Segments a photo of particles (a path, or a numpy array: (H, W), (H, W, 3) or (H, W, 4), uint8 "
+        "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict. "
+        "Keywords: mask (a path), invert, split, min_area; labels and report write the outlined photo "
+        "(PNG) and the statistics (JSON).");
+  m.def("particles", &particles, py::arg("photo"),
+        "Makes a particle solid from a photo (a path or a numpy array, as analyze takes): a dict of numpy "
+        "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB) and the "
+        "report (a dict). Keywords as the command line's options: size, dims, scale, placer, sizing, "
+        "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, seed, threads, mask, "
+        "invert, split, min_area; output (.vdb) and report (.json) write files; progress shows the "
+        "progress line. Ctrl-C stops it and leaves no file.");
   m.def(
       "synthesize",
       [](const std::string& exemplar, std::optional<std::string> output, py::kwargs kwargs) {

@@ -164,6 +164,29 @@ cv::Mat loadPhoto(const std::string& path) {
   return rgb;
 }
 
+cv::Mat photoFromPixels(const void* pixels, PixelType type, int width, int height, int channels,
+                        const std::string& name) {
+  if (channels != 1 && channels != 3 && channels != 4)
+    fail(name, "a photo has 1 (grey), 3 (RGB) or 4 (RGBA) channels, not " + std::to_string(channels));
+  OIIO::ImageSpec spec(width, height, channels);
+  checkSize(name, spec);
+  cv::Mat rgb(height, width, CV_32FC3);
+  std::vector<float> strip;
+  const std::size_t rowValues = std::size_t(width) * std::size_t(channels);
+  const int step = std::max(1, int(kStripBytes / (double(rowValues) * sizeof(float))));
+  const OIIO::TypeDesc from = type == PixelType::UInt8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  for (int y = 0; y < height; y += step) {
+    const int rows = std::min(height - y, step);
+    strip.resize(std::size_t(rows) * rowValues);
+    const auto* first = static_cast<const unsigned char*>(pixels) + std::size_t(y) * rowValues * from.size();
+    OIIO::convert_pixel_values(from, first, OIIO::TypeDesc::FLOAT, strip.data(), int(strip.size()));
+    copyRows(strip, channels, y, rgb);
+  }
+  cv::patchNaNs(rgb, 0.0);
+  cv::min(cv::max(rgb, 0.0), 1.0, rgb);
+  return rgb;
+}
+
 double photoMemoryBytes(int width, int height) {
   return kPhotoBytesPerPixel * double(width) * double(height) + kStripBytes;
 }

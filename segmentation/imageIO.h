@@ -19,6 +19,17 @@ inline constexpr int kMinPhotoSide = 8;
 /// off the terminal: it goes into the error's message, or nowhere when the image reads.
 cv::Mat loadPhoto(const std::string& path);
 
+/// The pixel types a photo in memory may have.
+enum class PixelType { UInt8, Float32 };
+
+/// A photo held in memory (`height` rows of `width` pixels of `channels` values each: 1 grey,
+/// 3 RGB, 4 RGBA; row-major, no padding), as loadPhoto reads the same pixels from a file: 8-bit
+/// values are converted as OpenImageIO converts them, floats are taken as sRGB and clamped to
+/// [0,1], grey is repeated, alpha dropped. `name` labels it in messages; throws InputError for a
+/// size or channel count loadPhoto would refuse.
+cv::Mat photoFromPixels(const void* pixels, PixelType type, int width, int height, int channels,
+                        const std::string& name);
+
 /// Bytes that loading and analysing (analyzeExemplar) a width x height photo take at their peak;
 /// loadPhoto refuses, before decoding, a photo whose estimate exceeds availableMemoryBytes().
 double photoMemoryBytes(int width, int height);

@@ -9,6 +9,7 @@
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/interruption.h"
 #include "common/secondsSince.h"
 #include "common/srgb.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
@@ -249,6 +250,7 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   search.histogramScale = std::max(1.0, o.indexReferenceCount * en.count() / double(matches.grid.count()));
 
   for (int it = 0; it < o.iterations; ++it) {
+    checkInterruption();
     IterationStatistics step;
     const auto t0 = Clock::now();
     step.energy = searchPhase(volume, en, search, matches, state.indexHistogram);

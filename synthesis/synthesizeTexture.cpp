@@ -13,6 +13,7 @@
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/interruption.h"
 #include "common/secondsSince.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
@@ -236,6 +237,7 @@ TextureLevelStatistics optimizeLevel(int l, int levels, const ExemplarPyramid& p
   texture = l == 0 ? randomTexture(stats.width, stats.height, ex, deriveSeed(o.seed, 0))
                    : upsample(texture, pyramid.levels[std::size_t(l - 1)].width, ex);
   for (int it = 0; it < o.iterations; ++it) {
+    checkInterruption();
     const Matches matches = search(texture, en, tree, o.sparseStep);
     stats.energies.push_back(meanRmsDistance(matches, en.shape.dims()));
     solve(texture, ex, en, matches, o.irlsExponent);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "common/Error.h"
+#include "common/ThreadLimit.h"
 #include "pipeline/compareJob.h"
 #include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
@@ -151,13 +152,13 @@ TEST(ParticleSolidJob, SameSeedGivesTheSameBytesWithOneAndTwoThreads) {
   {
     const ThreadLimit limit(1);
     ParticleSolidJob job = jobFor("coins", 48, one);
-    job.meshes = oneMeshes.string();
+    job.meshPath = oneMeshes.string();
     runParticleSolid(job);
   }
   {
     const ThreadLimit limit(2);
     ParticleSolidJob job = jobFor("coins", 48, two);
-    job.meshes = twoMeshes.string();
+    job.meshPath = twoMeshes.string();
     runParticleSolid(job);
     ParticleSolidJob seed2 = jobFor("coins", 48, other);
     seed2.seed = 2;

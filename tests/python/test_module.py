@@ -1,10 +1,16 @@
-"""The Python module against the command line: same bytes, same messages, arrays equal to the files."""
+"""The Python module on the library: numpy in and out, the command line's bytes, no file unless asked."""
+import json
 import os
+import shutil
+import signal
 import subprocess
+import sys
 import tempfile
+import time
 import unittest
 
 import numpy as np
+from PIL import Image
 
 import solidtex
 
@@ -12,73 +18,156 @@ CLI = os.environ["SOLIDTEX_CLI"]
 COINS = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "particles", "coins.png")
 
 
-def cli(*arguments):
-    return subprocess.run([CLI, *arguments], capture_output=True, text=True)
+def cli(*arguments, **kwargs):
+    return subprocess.run([CLI, *arguments], capture_output=True, text=True, **kwargs)
 
 
-class ParticlesTest(unittest.TestCase):
+def discs_photo():
+    """An RGB uint8 photo made in memory: 30 dark discs of radius 5 to 8 on a light, grainy ground."""
+    rng = np.random.default_rng(4)
+    y, x = np.mgrid[0:150, 0:150]
+    photo = np.empty((150, 150, 3), np.uint8)
+    photo[:] = (214, 206, 196)
+    photo = np.clip(photo + rng.normal(0, 3, photo.shape), 0, 255).astype(np.uint8)
+    for row in range(6):
+        for col in range(5):
+            cy, cx, r = 12 + 25 * row + rng.integers(-2, 3), 15 + 30 * col + rng.integers(-3, 4), rng.integers(5, 9)
+            photo[(y - cy) ** 2 + (x - cx) ** 2 <= r * r] = (70, 52, 40)
+    return photo
+
+
+class InMemoryTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
+        cls.photo = discs_photo()
         cls.folder = tempfile.TemporaryDirectory()
-        cls.vdb = os.path.join(cls.folder.name, "python.vdb")
-        cls.npy = os.path.join(cls.folder.name, "npy")
-        cls.solid = solidtex.particles(COINS, output=cls.vdb, size=24, seed=5, npy=cls.npy)
+        empty = os.path.join(cls.folder.name, "empty")
+        os.mkdir(empty)
+        before = os.getcwd()
+        os.chdir(empty)
+        try:
+            cls.solid = solidtex.particles(cls.photo, size=24, seed=5)
+        finally:
+            os.chdir(before)
+        cls.left_behind = os.listdir(empty)
 
     @classmethod
     def tearDownClass(cls):
         cls.folder.cleanup()
 
-    def test_the_vdb_is_the_command_lines_byte_for_byte(self):
-        made = os.path.join(self.folder.name, "cli.vdb")
-        self.assertEqual(cli("particles", COINS, "-o", made, "--size", "24", "--seed", "5", "--quiet").returncode, 0)
-        with open(self.vdb, "rb") as python, open(made, "rb") as command_line:
-            self.assertEqual(python.read(), command_line.read())
+    def test_no_file_is_written_when_none_is_asked_for(self):
+        self.assertEqual(self.left_behind, [])
 
-    def test_arrays_are_the_volume_and_the_report_describes_them(self):
-        ids, color = self.solid["particle_id"], self.solid["color"]
+    def test_the_arrays_are_the_command_lines_bytes_for_the_same_image_saved_as_png(self):
+        png = os.path.join(self.folder.name, "discs.png")
+        Image.fromarray(self.photo).save(png)
+        npy = os.path.join(self.folder.name, "npy")
+        vdb = os.path.join(self.folder.name, "cli.vdb")
+        run = cli("particles", png, "-o", vdb, "--size", "24", "--seed", "5", "--npy", npy, "--quiet")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        ids, color = np.load(os.path.join(npy, "particle_id.npy")), np.load(os.path.join(npy, "color.npy"))
+        self.assertEqual(ids.tobytes(), self.solid["particle_id"].tobytes())
+        self.assertEqual(color.tobytes(), self.solid["color"].tobytes())
+        self.assertEqual(ids.shape, self.solid["particle_id"].shape)
+        self.assertEqual(color.shape, self.solid["color"].shape)
+
+    def test_the_report_describes_the_arrays(self):
+        ids, report = self.solid["particle_id"], self.solid["report"]
         self.assertEqual(ids.shape, (24, 24, 24))
-        self.assertEqual(color.shape, (24, 24, 24, 3))
-        report = self.solid["report"]
+        self.assertEqual(self.solid["color"].shape, (24, 24, 24, 3))
         self.assertAlmostEqual(report["volume"]["volume_fraction"], float((ids > 0).mean()), places=12)
         self.assertEqual(report["volume"]["particles"], len(np.unique(ids[ids > 0])))
+        self.assertEqual(report["photo"]["particle_count"], 30)
 
-    def test_numpy_reads_the_npy_export_as_the_volume(self):
-        np.testing.assert_array_equal(np.load(os.path.join(self.npy, "particle_id.npy")), self.solid["particle_id"])
-        np.testing.assert_array_equal(np.load(os.path.join(self.npy, "color.npy")), self.solid["color"])
+    def test_grey_and_float_images_read_as_their_rgb_uint8_form(self):
+        grey = self.photo[:, :, 0]
+        as_rgb = solidtex.analyze(np.repeat(grey[:, :, None], 3, axis=2))
+        self.assertEqual(solidtex.analyze(grey), as_rgb)
+        as_float = solidtex.analyze(self.photo.astype(np.float64) / 255)
+        self.assertEqual(as_float["particle_count"], solidtex.analyze(self.photo)["particle_count"])
+
+    def test_output_and_report_write_the_volume_and_the_report(self):
+        vdb = os.path.join(self.folder.name, "python.vdb")
+        report = os.path.join(self.folder.name, "python.json")
+        solid = solidtex.particles(self.photo, size=24, seed=5, output=vdb, report=report)
+        np.testing.assert_array_equal(solid["particle_id"], self.solid["particle_id"])
+        with open(report) as f:
+            self.assertEqual(json.load(f)["volume"], solid["report"]["volume"])
+        comparison = solidtex.compare(COINS, vdb, axis_planes=4, oblique_planes=0)
+        self.assertIn("sections", json.dumps(comparison))
 
 
-class ErrorsTest(unittest.TestCase):
-    def assert_same_message(self, error, arguments):
-        run = cli(*arguments)
-        self.assertEqual(run.stderr.strip(), "solidtex: error: " + str(error.exception))
-        return run.returncode
-
-    def test_a_wrong_option_is_a_value_error_with_the_command_lines_message(self):
-        with self.assertRaises(ValueError) as error:
-            solidtex.particles(COINS, size=4096)
-        self.assertEqual(self.assert_same_message(error, ["particles", COINS, "-o", "x.vdb", "--size", "4096"]), 2)
-        with self.assertRaises(ValueError):
+class KeywordsTest(unittest.TestCase):
+    def test_a_keyword_of_the_wrong_type_is_a_type_error_naming_it(self):
+        for keywords, name in [({"size": "32"}, "size"), ({"size": True}, "size"), ({"seed": 1.5}, "seed"),
+                               ({"dims": (8, 8)}, "dims"), ({"split": 1}, "split"), ({"output": 3}, "output")]:
+            with self.assertRaises(TypeError) as error:
+                solidtex.particles(COINS, **keywords)
+            self.assertIn(name, str(error.exception))
+        with self.assertRaises(TypeError) as error:
             solidtex.particles(COINS, sise=32)
+        self.assertIn("sise", str(error.exception))
 
-    def test_a_failed_command_raises_solidtex_error_with_its_message(self):
+    def test_a_value_out_of_range_is_a_value_error_naming_the_keyword_not_a_flag(self):
+        for keywords, name in [({"views": 7}, "views"), ({"scale": 100.0}, "scale"),
+                               ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer")]:
+            with self.assertRaises(ValueError) as error:
+                solidtex.particles(COINS, size=16, **keywords)
+            self.assertIn(name, str(error.exception))
+            self.assertNotIn("--", str(error.exception))
+
+    def test_a_photo_that_cannot_be_read_is_solidtex_error(self):
         with self.assertRaises(solidtex.Error) as error:
             solidtex.particles("missing.png", size=16)
-        self.assertEqual(self.assert_same_message(error, ["particles", "missing.png", "-o", "x.vdb", "--size", "16"]), 1)
+        self.assertIn("missing.png: file not found", str(error.exception))
+        with self.assertRaises(TypeError):
+            solidtex.analyze(3)
 
-
-class ReportsTest(unittest.TestCase):
-    def test_analyze_and_compare_return_their_reports(self):
+    def test_a_path_is_never_parsed_as_an_option(self):
         with tempfile.TemporaryDirectory() as folder:
-            report = os.path.join(folder, "r.json")
-            self.assertEqual(cli("analyze", COINS, "--report", report).returncode, 0)
-            with open(report) as f:
-                import json
+            shutil.copy(COINS, os.path.join(folder, "-in.png"))
+            shutil.copy(COINS, os.path.join(folder, "--help"))
+            before = os.getcwd()
+            os.chdir(folder)
+            try:
+                for name in ["-in.png", "--help"]:
+                    self.assertEqual(solidtex.analyze(name)["particle_count"], 24)
+            finally:
+                os.chdir(before)
 
-                self.assertEqual(solidtex.analyze(COINS), json.load(f))
-            solid = os.path.join(folder, "s.vdb")
-            solidtex.particles(COINS, output=solid, size=32)
-            comparison = solidtex.compare(COINS, solid, axis_planes=4, oblique_planes=0)
-            self.assertIn("sections", json.dumps(comparison))
+
+SCRIPT = """
+import sys, solidtex
+print("started", flush=True)
+try:
+    solidtex.particles(sys.argv[1], size=80, seed=2, output=sys.argv[2], report=sys.argv[3])
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(0)
+print("finished", flush=True)
+"""
+
+
+class ProcessTest(unittest.TestCase):
+    def test_ctrl_c_stops_the_call_and_leaves_none_of_its_outputs(self):
+        with tempfile.TemporaryDirectory() as folder:
+            vdb, report = os.path.join(folder, "a.vdb"), os.path.join(folder, "a.json")
+            child = subprocess.Popen([sys.executable, "-c", SCRIPT, COINS, vdb, report], stdout=subprocess.PIPE,
+                                     text=True)
+            self.assertEqual(child.stdout.readline().strip(), "started")
+            time.sleep(3)
+            sent = time.monotonic()
+            child.send_signal(signal.SIGINT)
+            out, _ = child.communicate(timeout=120)
+            print(f"\nCtrl-C to exit: {time.monotonic() - sent:.2f} s", file=sys.stderr)
+            self.assertEqual(out.strip(), "interrupted")
+            self.assertEqual(os.listdir(folder), [])
+
+    def test_a_missing_temporary_folder_does_not_matter_when_nothing_is_written(self):
+        environment = dict(os.environ, TMPDIR="/nonexistent/solidtex")
+        code = "import solidtex, sys; print(solidtex.particles(sys.argv[1], size=16)['report']['volume']['particles'] > 0)"
+        run = subprocess.run([sys.executable, "-c", code, COINS], capture_output=True, text=True, env=environment)
+        self.assertEqual(run.stdout.strip(), "True", run.stderr)
 
 
 if __name__ == "__main__":

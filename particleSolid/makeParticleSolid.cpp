@@ -1,0 +1,291 @@
+#include "particleSolid/makeParticleSolid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <utility>
+
+#include "common/Error.h"
+#include "common/Random.h"
+#include "common/memoryBudget.h"
+#include "mesh/particleMeshes.h"
+#include "placement/cropPlacement.h"
+#include "voxel/paintParticleSolid.h"
+
+namespace solidtex {
+namespace {
+
+// Peak resident memory per voxel of the placement block: 691 MiB for gravel at 256^3 with walls.
+constexpr double kPlacementBytesPerVoxel = 40;
+
+constexpr int kSizingBootstraps = 8;  // a range of the size factor, at a fraction of the fit's time
+
+constexpr int kMatrixBlock = 64;     // largest edge of the synthesised matrix block, tiled over the volume
+constexpr int kMinMatrixBlock = 16;  // below it the synthesis has no room for its levels
+
+void report(const Progress& progress, const std::string& step, double fraction = -1) {
+  if (progress) progress(step, fraction);
+}
+
+double voxelsPerPixel(const ParticleSolidOptions& options, const ExemplarStats& stats) {
+  if (options.voxelsPerPixel <= 0) return defaultVoxelsPerPixel(stats, options.dims);
+  // Below a voxel across, the photo's largest particle would be no particle at all.
+  const double largest = largestBoxSide(stats);
+  if (largest * options.voxelsPerPixel < 1) {
+    char text[160];
+    std::snprintf(
+        text, sizeof text,
+        "--scale %g makes the photo's largest particle (%g pixels across) less than a voxel: give at "
+        "least %.3g",
+        options.voxelsPerPixel, largest, 1 / largest);
+    throw OptionError(text);
+  }
+  return options.voxelsPerPixel;
+}
+
+// The block's edge: a multiple of 4 (the synthesis' levels), no larger than the volume needs, and
+// in a periodic volume a divisor of every side, so that the tiling wraps with the volume. 0: none.
+int matrixBlock(const Dims& dims, bool periodic) {
+  if (!periodic) return std::min(kMatrixBlock, (std::max({dims.x, dims.y, dims.z}) + 3) / 4 * 4);
+  const int common = std::gcd(dims.x, std::gcd(dims.y, dims.z));
+  for (int block = kMatrixBlock; block >= kMinMatrixBlock; block -= 4)
+    if (common % block == 0) return block;
+  return 0;
+}
+
+using BlockSynthesis = std::optional<TiledMatrix> (*)(const ExemplarStats&, const MatrixSynthesisOptions&);
+
+// A synthesised block of one of the solid's textures (the matrix, the particles' grain), or none
+// (projection) with the reason in `choice`.
+std::optional<TiledMatrix> makeBlock(const ParticleSolidOptions& options, Texture texture,
+                                     BlockSynthesis synthesize, const ExemplarStats& stats, double scale,
+                                     std::uint64_t stream, const char* tooLittle, const Progress& progress,
+                                     const char* step, TextureChoice& choice) {
+  choice = {texture, 0, {}};
+  if (texture == Texture::Projected) return std::nullopt;
+  report(progress, step);
+  const int block = matrixBlock(options.dims, options.boundary == Boundary::Periodic);
+  if (block < kMinMatrixBlock) {
+    choice = {Texture::Projected, 0, "no block of 16 to 64 voxels, a multiple of 4, tiles this volume"};
+    return std::nullopt;
+  }
+  std::optional<TiledMatrix> result = synthesize(stats, {block, scale, deriveSeed(options.seed, stream), 0});
+  if (!result)
+    choice = {Texture::Projected, 0, tooLittle};
+  else
+    choice.block = block;
+  return result;
+}
+
+// The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
+// particles at the sizes the solid will have (sized first with the sharp hulls).
+ParticleFactory makeFactory(const ParticleSolidOptions& options, const ExemplarStats& stats, double scale,
+                            SmoothingFit& smoothing) {
+  ParticleOptions particles = options.particles;
+  particles.seed = options.seed;
+  particles.smoothing.radius = options.smoothing.value_or(0);
+  ParticleFactory factory(stats, particles);
+  if (options.smoothing) {
+    smoothing.radius = *options.smoothing;
+    return factory;
+  }
+  const double sizeFactor = options.sizing == Sizing::Sections
+                                ? fitSectionSizing(stats, factory, scale, options.seed).sizeFactor
+                                : 1.0;
+  smoothing = fitHullSmoothing(stats, factory, scale, sizeFactor, options.seed);
+  particles.smoothing.radius = smoothing.radius;
+  return factory.withSmoothing(particles.smoothing);
+}
+
+// Each mesh takes its particle's mean colour, texture and all.
+void paintMeshes(std::vector<ParticleMesh>& meshes, const SolidVolume& volume) {
+  std::vector<std::array<double, 4>> sums(meshes.size() + 1, {0, 0, 0, 0});  // per id: r, g, b, count
+  for (std::size_t i = 0; i < volume.particleId.size(); ++i) {
+    auto& sum = sums[std::size_t(volume.particleId[i])];
+    for (int c = 0; c < 3; ++c) sum[std::size_t(c)] += volume.color[i][std::size_t(c)];
+    sum[3] += 1;
+  }
+  for (ParticleMesh& m : meshes) {
+    const auto& sum = sums[std::size_t(m.id)];
+    for (int c = 0; c < 3; ++c) m.color[std::size_t(c)] = float(sum[std::size_t(c)] / std::max(1.0, sum[3]));
+  }
+}
+
+}  // namespace
+
+Boundary parseBoundary(const std::string& name) {
+  if (name == "open") return Boundary::Open;
+  if (name == "walls") return Boundary::Walls;
+  if (name == "periodic") return Boundary::Periodic;
+  throw OptionError("unknown boundary '" + name + "': use open, walls or periodic");
+}
+
+const char* boundaryName(Boundary boundary) {
+  switch (boundary) {
+    case Boundary::Open:
+      return "open";
+    case Boundary::Walls:
+      return "walls";
+    case Boundary::Periodic:
+      return "periodic";
+  }
+  return "unknown";
+}
+
+Texture parseTexture(const std::string& option, const std::string& name) {
+  if (name == "synthesized") return Texture::Synthesized;
+  if (name == "projected") return Texture::Projected;
+  throw OptionError(option + ": unknown texture '" + name + "': use synthesized or projected");
+}
+
+const char* textureName(Texture texture) {
+  return texture == Texture::Synthesized ? "synthesized" : "projected";
+}
+
+int largestBoxSide(const ExemplarStats& stats) {
+  int side = 1;
+  for (const auto& pair : stats.sizePairs) side = std::max({side, pair.width, pair.height});
+  return side;
+}
+
+double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims) {
+  // 1:1 keeps particle shapes as resolved as in the photo, unless particles would be so large
+  // that few fit and the walls dominate the packing.
+  const int smallestEdge = std::min({dims.x, dims.y, dims.z});
+  return std::min(1.0, 0.25 * smallestEdge / largestBoxSide(stats));
+}
+
+float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
+  return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
+}
+
+int openBoundaryMargin(const ExemplarStats& stats, double particleScale) {
+  return int(std::ceil(largestBoxSide(stats) * particleScale / 2));
+}
+
+void checkParticleSolidOptions(const ParticleSolidOptions& options) {
+  for (int edge : {options.dims.x, options.dims.y, options.dims.z})
+    if (edge < 8 || edge > kMaxVolumeEdge)
+      throw OptionError("volume size " + std::to_string(edge) + " is out of range [8, " +
+                        std::to_string(kMaxVolumeEdge) + "]");
+  if (options.voxelsPerPixel < 0 || options.voxelsPerPixel > 64)
+    throw OptionError("--scale must be in (0, 64] voxels per pixel");
+  if (options.particles.views < 3 || options.particles.views > 5)
+    throw OptionError("--views must be 3, 4 or 5");
+  if (options.particles.shapes < 1 || options.particles.shapes > 4096)
+    throw OptionError("--shapes must be in [1, 4096]");
+}
+
+ParticleSolidBuilder::ParticleSolidBuilder(ParticleSolidOptions options, Progress progress)
+    : options_(std::move(options)), progress_(std::move(progress)) {
+  checkParticleSolidOptions(options_);
+  requireVolumeMemory("the volume", options_.dims, kPlacementBytesPerVoxel);
+}
+
+const ExemplarStats& ParticleSolidBuilder::analyze(const cv::Mat& photoSrgb, const std::string& name) {
+  solid_.timer.start("analysis");
+  report(progress_, "segmenting the photo");
+  solid_.stats = analyzeExemplar(photoSrgb, name, options_.segmentation);
+  return solid_.stats;
+}
+
+void ParticleSolidBuilder::makeParticles() {
+  const ExemplarStats& stats = solid_.stats;
+  const double scale = solid_.voxelsPerPixel = voxelsPerPixel(options_, stats);
+  solid_.timer.start("particle_shapes");
+  report(progress_, "building particle shapes");
+  factory_.emplace(makeFactory(options_, stats, scale, solid_.smoothing));
+
+  solid_.timer.start("sizing");
+  solid_.sizing = {1, {}, stats.histogram.ratios, 0, {}};
+  if (options_.sizing == Sizing::Sections) {
+    report(progress_, "sizing particles from their sections");
+    solid_.sizing = fitSectionSizing(stats, *factory_, scale, options_.seed, kSizingBootstraps);
+  }
+}
+
+const PlacementResult& ParticleSolidBuilder::place() {
+  const ExemplarStats& stats = solid_.stats;
+  solid_.timer.start("placement");
+  // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
+  const double particleScale = solid_.voxelsPerPixel * solid_.sizing.sizeFactor;
+  const Dims& dims = options_.dims;
+  const int margin = options_.boundary == Boundary::Open ? openBoundaryMargin(stats, particleScale) : 0;
+  const Dims placed{dims.x + 2 * margin, dims.y + 2 * margin, dims.z + 2 * margin};
+  requireVolumeMemory(margin > 0 ? "placing particles in a block" : "placing particles", placed,
+                      kPlacementBytesPerVoxel);
+  const bool periodic = options_.boundary == Boundary::Periodic;
+  auto field =
+      makeSpaciousnessField(options_.placer, placed, placementRadiusCap(stats, particleScale), periodic);
+  PlacementOptions placement;
+  placement.dims = placed;
+  placement.periodic = periodic;
+  if (margin > 0) placement.counted = VolumeBox{{margin, margin, margin}, dims};
+  placement.voxelsPerPixel = solid_.voxelsPerPixel;
+  placement.seed = options_.seed;
+  placement.arrangement = options_.arrangement;
+  if (options_.sizing == Sizing::Sections) {
+    placement.particleWeights = solid_.sizing.particleWeights;
+    placement.sizeFactor = solid_.sizing.sizeFactor;
+  }
+  placement.progress = [&](double fraction, int count) {
+    char line[128];
+    std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
+                  fraction, stats.areaFraction);
+    report(progress_, line, stats.areaFraction > 0 ? fraction / stats.areaFraction : -1);
+  };
+  solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
+  if (margin > 0) solid_.placement = cropPlacement(solid_.placement, {margin, margin, margin}, dims);
+  return solid_.placement;
+}
+
+ParticleSolid ParticleSolidBuilder::finish() {
+  const ExemplarStats& stats = solid_.stats;
+  const double scale = solid_.voxelsPerPixel;
+  PlacementResult& placement = solid_.placement;
+  solid_.timer.start("matrix");
+  const std::optional<TiledMatrix> matrix =
+      makeBlock(options_, options_.matrix, synthesizeMatrix, stats, scale, 0x3A7B1C,
+                "the photo shows too little matrix to learn its texture", progress_,
+                "synthesizing the matrix", solid_.matrix);
+  solid_.timer.start("particle_grain");
+  const std::optional<TiledMatrix> grain =
+      makeBlock(options_, options_.particleTexture, synthesizeParticleGrain, stats, scale, 0x6A17E5,
+                "the photo shows too little of its particles to learn their grain", progress_,
+                "synthesizing the particles' grain", solid_.particleTexture);
+
+  solid_.timer.start("color");
+  report(progress_, "painting the particles");
+  std::vector<ParticlePaint> paints;
+  paints.reserve(placement.particles.size());
+  for (const PlacedParticle& placed : placement.particles)
+    paints.push_back({placed.source,
+                      {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
+                       placed.origin.z + placed.box.z * 0.5},
+                      placed.voxelsPerPixel});
+  solid_.volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale,
+                                     options_.seed, options_.boundary == Boundary::Periodic,
+                                     matrix ? &*matrix : nullptr, grain ? &*grain : nullptr);
+  placement.ids.clear();
+
+  if (options_.meshes) {
+    solid_.timer.start("meshes");
+    report(progress_, "meshing the particles");
+    solid_.meshes = particleMeshes(placement, factory_->hulls());
+    paintMeshes(solid_.meshes, solid_.volume);
+  }
+  return std::move(solid_);
+}
+
+ParticleSolid makeParticleSolid(const cv::Mat& photoSrgb, const std::string& name,
+                                const ParticleSolidOptions& options, const Progress& progress) {
+  ParticleSolidBuilder builder(options, progress);
+  builder.analyze(photoSrgb, name);
+  builder.makeParticles();
+  builder.place();
+  return builder.finish();
+}
+
+}  // namespace solidtex

@@ -1,0 +1,135 @@
+#pragma once
+/// @file makeParticleSolid.h
+/// @brief Photo to particle solid in memory: segmentation, hulls, sizing, placement, painting.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "common/Grid.h"
+#include "common/PhaseTimer.h"
+#include "common/Progress.h"
+#include "mesh/ParticleMesh.h"
+#include "particles/ParticleFactory.h"
+#include "particles/fitHullSmoothing.h"
+#include "placement/SpaciousnessField.h"
+#include "placement/placeLargestFirst.h"
+#include "placement/sectionSizing.h"
+#include "segmentation/analyzeExemplar.h"
+#include "synthesis/synthesizeMatrix.h"
+#include "voxel/SolidVolume.h"
+
+namespace solidtex {
+
+/// What the volume's faces are to its particles.
+enum class Boundary {
+  Open,      ///< the volume is cut from a larger solid: particles run through its faces
+  Walls,     ///< the paper's: particles stay inside, and thin out along every face
+  Periodic,  ///< a 3D torus: particles leaving by a face come back by the opposite one, so copies tile
+};
+
+/// "open" | "walls" | "periodic"; throws OptionError otherwise.
+Boundary parseBoundary(const std::string& name);
+const char* boundaryName(Boundary boundary);
+
+/// How a part of the solid (the matrix between the particles, the particles' insides) is textured.
+enum class Texture {
+  Synthesized,  ///< a periodic solid texture grown from the photo's own (chen-wang), tiled
+  Projected,    ///< the paper's: the photo's residual projected along one direction
+};
+
+/// "synthesized" | "projected" for `option` (named in the error); throws OptionError otherwise.
+Texture parseTexture(const std::string& option, const std::string& name);
+const char* textureName(Texture texture);
+
+/// Everything that decides a particle solid, apart from the photo.
+struct ParticleSolidOptions {
+  SegmentationOptions segmentation;
+  Dims dims{128, 128, 128};
+  double voxelsPerPixel =
+      0;  ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
+  PlacerKind placer = PlacerKind::Edt;
+  Sizing sizing = Sizing::Sections;
+  Arrangement arrangement = Arrangement::Uniform;
+  Boundary boundary = Boundary::Open;
+  Texture matrix = Texture::Synthesized;
+  Texture particleTexture = Texture::Projected;  ///< the particles' insides
+  ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
+  std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
+  std::uint64_t seed = 1;
+  bool meshes = false;  ///< also mesh each particle's surface (ParticleSolid::meshes)
+};
+
+/// How one texture of the solid was made: synthesized (a tiled block of `block` voxels) or projected,
+/// with the reason when synthesis was asked for but not possible.
+struct TextureChoice {
+  Texture texture = Texture::Projected;
+  int block = 0;
+  std::string reason;
+};
+
+/// A particle solid and how it was made.
+struct ParticleSolid {
+  ExemplarStats stats;        ///< the photo's segmentation and particle statistics
+  double voxelsPerPixel = 1;  ///< the photo's scale in the volume
+  SmoothingFit smoothing;
+  SectionSizing sizing;
+  PlacementResult placement;  ///< the placed particles; its ids are moved into `volume`
+  SolidVolume volume;         ///< particle ids and linear RGB colours, dims.count() each
+  TextureChoice matrix, particleTexture;
+  std::vector<ParticleMesh> meshes;  ///< when asked for, in the volume's index space
+  PhaseTimer timer;                  ///< the phases so far; callers may time their own after them
+};
+
+/// Refuses (OptionError) options out of range: the volume's edges, the scale, views and shapes.
+void checkParticleSolidOptions(const ParticleSolidOptions& options);
+
+/// Makes a particle solid in stages, so that a caller can act between them (report the photo's
+/// statistics before the long work, place into one brick of a larger volume). Call the stages in
+/// order; each throws InputError for a photo it cannot use, OptionError for options out of range.
+class ParticleSolidBuilder {
+public:
+  /// Checks the options and that the volume fits in memory.
+  explicit ParticleSolidBuilder(ParticleSolidOptions options, Progress progress = {});
+
+  /// Segments the photo (CV_32FC3 sRGB in [0, 1], RGB order) and measures its particles; `name`
+  /// labels it in reports and messages.
+  const ExemplarStats& analyze(const cv::Mat& photoSrgb, const std::string& name);
+  /// Builds the hull shapes and fits the smoothing and the section sizing.
+  void makeParticles();
+  /// Places particles until the photo's area fraction is met or nothing more fits.
+  const PlacementResult& place();
+  /// Textures the matrix and the particles, paints the volume and meshes it when asked.
+  ParticleSolid finish();
+
+private:
+  ParticleSolidOptions options_;
+  Progress progress_;
+  ParticleSolid solid_;
+  std::optional<ParticleFactory> factory_;
+};
+
+/// The one-off form of ParticleSolidBuilder: all stages in order.
+ParticleSolid makeParticleSolid(const cv::Mat& photoSrgb, const std::string& name,
+                                const ParticleSolidOptions& options, const Progress& progress = {});
+
+/// The largest edge a volume may have; beyond it memory, not patience, runs out.
+constexpr int kMaxVolumeEdge = 2048;
+
+/// The largest side of the photo's particle boxes, pixels.
+int largestBoxSide(const ExemplarStats& stats);
+
+/// Voxels per photo pixel when none is asked for: 1, or less when the largest particle would exceed a
+/// quarter of the volume's smallest edge.
+double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims);
+
+/// The spaciousness cap for placing the photo's particles (the paper's sqrt(3) D / 2, plus a voxel).
+float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel);
+
+/// The margin an open boundary places particles in around the volume: the radius of the largest
+/// particle, so that the faces of the placement's volume leave the volume's own faces unaffected.
+int openBoundaryMargin(const ExemplarStats& stats, double particleScale);
+
+}  // namespace solidtex

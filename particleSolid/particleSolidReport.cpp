@@ -1,0 +1,92 @@
+#include "particleSolid/particleSolidReport.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "Version.h"
+#include "segmentation/reportJson.h"
+
+namespace solidtex {
+namespace {
+
+nlohmann::json placementJson(const PlacementResult& placement, const ExemplarStats& stats, double scale) {
+  return {
+      {"dims", {placement.dims.x, placement.dims.y, placement.dims.z}},
+      {"voxels_per_pixel", scale},
+      {"particles", placement.particles.size()},
+      {"volume_fraction", placement.volumeFraction},
+      {"area_fraction", stats.areaFraction},
+      {"placed_per_bin", placement.placedPerBin},
+      {"rejected_per_bin", placement.rejectedPerBin},
+      {"area_histogram", stats.histogram.ratios},
+      {"volume_histogram", placement.volumeHistogram},
+      {"stop_reason", placement.stopReason},
+      {"shrinking",
+       {{"steps", placement.shrinkSteps},
+        {"smallest_scale", placement.smallestScale},
+        {"particles_shrunk", placement.particlesBeforeShrinking < 0
+                                 ? 0
+                                 : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
+}
+
+nlohmann::json textureJson(const TextureChoice& choice) {
+  nlohmann::json json = {{"texture", textureName(choice.texture)}};
+  if (choice.block > 0) json["block"] = choice.block;
+  if (!choice.reason.empty()) json["reason"] = choice.reason;
+  return json;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& solid,
+                                                         const ParticleSolidOptions& options,
+                                                         const std::string& commandLine) {
+  char fraction[32], voxelsPerPixel[32];
+  std::snprintf(fraction, sizeof fraction, "%.6f", solid.placement.volumeFraction);
+  std::snprintf(voxelsPerPixel, sizeof voxelsPerPixel, "%.9g", solid.voxelsPerPixel);
+  return {{"solidtex_version", SOLIDTEX_VERSION},
+          {"command_line", commandLine},
+          {"seed", std::to_string(options.seed)},
+          {"exemplar", std::filesystem::path(solid.stats.name).filename().string()},
+          {"volume_fraction", fraction},
+          {"voxels_per_pixel", voxelsPerPixel},
+          {"placer", placerName(options.placer)},
+          {"sizing", sizingName(options.sizing)},
+          {"arrangement", arrangementName(options.arrangement)},
+          {"boundary", boundaryName(options.boundary)},
+          {"size_factor", std::to_string(solid.sizing.sizeFactor)},
+          {"smoothing", std::to_string(solid.smoothing.radius)}};
+}
+
+nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSolidOptions& options) {
+  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
+                           {"command", "particles"},
+                           {"seed", options.seed},
+                           {"placer", placerName(options.placer)},
+                           {"sizing", sizingName(options.sizing)},
+                           {"arrangement", arrangementName(options.arrangement)},
+                           {"boundary", boundaryName(options.boundary)},
+                           {"matrix", textureJson(solid.matrix)},
+                           {"particle_texture", textureJson(solid.particleTexture)},
+                           {"views", options.particles.views},
+                           {"photo", toJson(solid.stats)},
+                           {"volume", placementJson(solid.placement, solid.stats, solid.voxelsPerPixel)}};
+  const SectionSizing& sizing = solid.sizing;
+  report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
+  report["volume"]["size_factor"] = sizing.sizeFactor;
+  report["smoothing"] = {{"radius", solid.smoothing.radius}, {"fitted", !options.smoothing.has_value()}};
+  if (!options.smoothing) {
+    report["smoothing"]["solidity_ks"] = solid.smoothing.solidityKs;
+    report["smoothing"]["roundness_ks"] = solid.smoothing.roundnessKs;
+  }
+  if (options.sizing == Sizing::Sections) {
+    report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
+    const SizingUncertainty& u = sizing.uncertainty;
+    report["volume"]["sizing_uncertainty"] = {{"bootstraps", u.bootstraps},
+                                              {"size_factor_5_95", {u.sizeFactorLow, u.sizeFactorHigh}},
+                                              {"mean_volume_relative_spread", u.meanVolumeSpread}};
+  }
+  return report;
+}
+
+}  // namespace solidtex
