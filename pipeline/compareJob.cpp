@@ -99,7 +99,8 @@ int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
   return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
 }
 
-nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume, OutputFiles& outputs) {
+nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
+                                cv::Mat* plot) {
   if (job.reference)
     throw OptionError("--reference is for continuous solids; give --truth for particle solids");
   if (job.sections.offsetsPerAxis < 1 || job.sections.offsetsPerAxis > 4096)
@@ -108,7 +109,6 @@ nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume
     throw OptionError("--oblique-planes must be in [0, 100000]");
   if (volume.particleId.empty())
     throw InputError(job.volume + " has no particle_id grid: not a particle solid");
-  const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const double scale = scaleOf(job, volume);
 
@@ -157,10 +157,7 @@ nlohmann::json compareParticles(const CompareJob& job, const SolidVolume& volume
       {"particle_diameter", diameter}};
   if (job.truth)
     report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
-  if (job.plot) {
-    const cv::Mat plot = plotComparison(data, report);
-    outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
-  }
+  if (plot) *plot = plotComparison(data, report);
   return report;
 }
 
@@ -189,10 +186,9 @@ cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const 
   return out;
 }
 
-nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volume, OutputFiles& outputs) {
+nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar, const SolidVolume& volume,
+                                 const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
-  const cv::Mat exemplar = loadPhoto(job.photo);
-  const cv::Mat reference = job.reference ? loadPhoto(*job.reference) : cv::Mat();
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},
@@ -200,11 +196,12 @@ nlohmann::json compareContinuous(const CompareJob& job, const SolidVolume& volum
                            {"dims", {volume.dims.x, volume.dims.y, volume.dims.z}},
                            {"quality", continuousQualityJson(quality, job.quality)}};
   if (job.reference) report["reference"] = *job.reference;
-  if (job.plot) {
-    const cv::Mat plot = continuousPlot(exemplar, reference, volume);
-    outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
-  }
+  if (plot) *plot = continuousPlot(exemplar, reference, volume);
   return report;
+}
+
+bool comparesParticles(const CompareJob& job, const SolidVolume& volume) {
+  return job.mode == CompareMode::Particles || (job.mode == CompareMode::Auto && !volume.particleId.empty());
 }
 
 }  // namespace
@@ -216,6 +213,12 @@ CompareMode parseCompareMode(const std::string& name) {
   throw OptionError("unknown compare mode '" + name + "' (expected auto, particles or continuous)");
 }
 
+nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
+                            const cv::Mat& reference, cv::Mat* plot) {
+  return comparesParticles(job, volume) ? compareParticles(job, photo, volume, plot)
+                                        : compareContinuous(job, photo, volume, reference, plot);
+}
+
 nlohmann::json runCompare(const CompareJob& job) {
   OutputFiles outputs;
   for (const auto& input : {std::optional(job.photo), std::optional(job.volume), job.truth, job.reference,
@@ -224,10 +227,12 @@ nlohmann::json runCompare(const CompareJob& job) {
   if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
   addReport(outputs, job.report);
   const SolidVolume volume = readVdb(job.volume);
-  const bool particles =
-      job.mode == CompareMode::Particles || (job.mode == CompareMode::Auto && !volume.particleId.empty());
-  nlohmann::json report =
-      particles ? compareParticles(job, volume, outputs) : compareContinuous(job, volume, outputs);
+  const cv::Mat photo = loadPhoto(job.photo);
+  const cv::Mat reference =
+      job.reference && !comparesParticles(job, volume) ? loadPhoto(*job.reference) : cv::Mat();
+  cv::Mat plot;
+  nlohmann::json report = compareSolid(job, photo, volume, reference, job.plot ? &plot : nullptr);
+  if (job.plot) outputs.write(*job.plot, [&](const std::string& path) { writeImage(path, plot); });
   writeReport(outputs, job.report, report);
   outputs.commit();
   return report;

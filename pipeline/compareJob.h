@@ -7,6 +7,7 @@
 #include "segmentation/analyzeExemplar.h"
 #include "validation/continuousQuality.h"
 #include "validation/sectionStatistics.h"
+#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 
@@ -35,6 +36,13 @@ struct CompareJob {
   std::optional<std::string> reference;  ///< continuous: a second photo of the material, the reference level
   ContinuousQualityOptions quality;      ///< continuous: how slices are measured
 };
+
+/// The comparison itself, on a photo (CV_32FC3 sRGB, as loadPhoto returns), a solid and, for a
+/// continuous one, a reference photo (or an empty Mat) in memory; the job's paths only label them
+/// in the report, apart from its truth (read from its file). `plot`, when given, receives the
+/// comparison plot.
+nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
+                            const cv::Mat& reference, cv::Mat* plot = nullptr);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runCompare(const CompareJob& job);

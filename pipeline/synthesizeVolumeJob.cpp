@@ -117,8 +117,10 @@ DenseVolume centralBox(const DenseVolume& v, int side) {
   return out;
 }
 
-nlohmann::json measuredQuality(const DenseVolume& output, const DenseVolume& exemplar,
-                               const VolumeQualityOptions& options) {
+}  // namespace
+
+nlohmann::json volumeQualityReport(const DenseVolume& output, const DenseVolume& exemplar,
+                                   const VolumeQualityOptions& options) {
   const Dims& d = output.dims;
   if (std::min({d.x, d.y, d.z}) < options.patch)
     return {{"skipped", "the output is thinner than a " + std::to_string(options.patch) + "^3 patch"}};
@@ -127,8 +129,6 @@ nlohmann::json measuredQuality(const DenseVolume& output, const DenseVolume& exe
   quality["measured_voxels"] = {measured.dims.x, measured.dims.y, measured.dims.z};
   return quality;
 }
-
-}  // namespace
 
 DenseVolume readVolumeExemplar(const std::string& path) {
   SolidVolume v = readVdb(path);
@@ -158,6 +158,37 @@ DenseVolume readVolumeExemplar(const std::string& path) {
   return out;
 }
 
+nlohmann::json volumeSynthesisReport(const VolumeSynthesisResult& result,
+                                     const VolumeSynthesisOptions& options, const DenseVolume& exemplar,
+                                     const std::string& exemplarName, const std::string& fieldName) {
+  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
+                           {"command", "synthesize"},
+                           {"method", "su-volume"},
+                           {"exemplar",
+                            {{"name", exemplarName},
+                             {"dims", {exemplar.dims.x, exemplar.dims.y, exemplar.dims.z}},
+                             {"channels", exemplar.channels},
+                             {"domain", result.statistics.domain}}},
+                           {"dims", {options.dims.x, options.dims.y, options.dims.z}},
+                           {"field", fieldName},
+                           {"jitter", options.jitter},
+                           {"k", options.k},
+                           {"exclusion", options.exclusion},
+                           {"appearance", options.window},
+                           {"pca_dims", options.pcaDims},
+                           {"corrections", options.corrections},
+                           {"periodic", options.periodic},
+                           {"seed", options.seed}};
+  if (options.region) {
+    const VoxelBox& box = result.box;
+    report["region"] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
+  }
+  report["level_reports"] = levelReports(result.statistics);
+  report["analysis_seconds"] = result.statistics.analysisSeconds;
+  report["seconds"] = result.statistics.seconds;
+  return report;
+}
+
 nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   namespace fs = std::filesystem;
   // Peak resident memory per voxel: 981 MiB for the walnut solid at 256^3; a frame field adds its
@@ -183,32 +214,12 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   VolumeSynthesisResult result = synthesizeFromVolume(exemplar, options);
   progress.done();
 
-  nlohmann::json report = {{"solidtex_version", SOLIDTEX_VERSION},
-                           {"command", "synthesize"},
-                           {"method", "su-volume"},
-                           {"exemplar",
-                            {{"name", fs::path(job.exemplar).filename().string()},
-                             {"dims", {exemplar.dims.x, exemplar.dims.y, exemplar.dims.z}},
-                             {"channels", exemplar.channels},
-                             {"domain", result.statistics.domain}}},
-                           {"dims", {options.dims.x, options.dims.y, options.dims.z}},
-                           {"field", job.field.value_or("none")},
-                           {"jitter", options.jitter},
-                           {"k", options.k},
-                           {"exclusion", options.exclusion},
-                           {"appearance", options.window},
-                           {"pca_dims", options.pcaDims},
-                           {"corrections", options.corrections},
-                           {"periodic", options.periodic},
-                           {"seed", options.seed}};
+  nlohmann::json report = volumeSynthesisReport(
+      result, options, exemplar, fs::path(job.exemplar).filename().string(), job.field.value_or("none"));
   const VoxelBox& box = result.box;
-  if (options.region) report["region"] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
-  report["level_reports"] = levelReports(result.statistics);
-  report["analysis_seconds"] = result.statistics.analysisSeconds;
-  report["seconds"] = result.statistics.seconds;
   if (job.measure) {
     progress.update("measuring the volume against the exemplar");
-    report["quality"] = measuredQuality(result.values, exemplar, job.quality);
+    report["quality"] = volumeQualityReport(result.values, exemplar, job.quality);
     progress.done();
   }
   SolidVolume solid = solidOf(std::move(result));

@@ -28,6 +28,17 @@ struct SynthesizeVolumeJob {
 /// The exemplar of a volume job: the `color` grid's three channels if the file has one, else `density`.
 DenseVolume readVolumeExemplar(const std::string& path);
 
+/// The report of a volume synthesis: the exemplar, the options, each level's statistics and the
+/// timings (no quality, outputs or memory).
+nlohmann::json volumeSynthesisReport(const VolumeSynthesisResult& result,
+                                     const VolumeSynthesisOptions& options, const DenseVolume& exemplar,
+                                     const std::string& exemplarName, const std::string& fieldName);
+
+/// The output's 3D patch quality against the exemplar, measured on at most its central 128^3 box;
+/// a note instead when it is thinner than a patch.
+nlohmann::json volumeQualityReport(const DenseVolume& output, const DenseVolume& exemplar,
+                                   const VolumeQualityOptions& options);
+
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job);
 

@@ -69,8 +69,10 @@ std::optional<std::string> Keywords::path(const char* name) {
 std::optional<std::vector<int>> Keywords::integers(const char* name, std::size_t count) {
   const py::object value = take(name);
   if (value.is_none()) return std::nullopt;
-  const std::string wanted = "a sequence of " + std::to_string(count) + " ints";
-  if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != count)
+  const std::string wanted =
+      count > 0 ? "a sequence of " + std::to_string(count) + " ints" : "a sequence of ints";
+  if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) ||
+      (count > 0 ? py::len(value) != count : py::len(value) == 0))
     wrongType(name, wanted.c_str(), value);
   std::vector<int> result;
   for (const py::handle item : value) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace solidtex::python {
 
@@ -19,8 +20,11 @@ public:
   std::optional<std::string> text(const char* name);
   /// A str or an os.PathLike.
   std::optional<std::string> path(const char* name);
-  /// A sequence of `count` ints.
-  std::optional<std::vector<int>> integers(const char* name, std::size_t count);
+  /// A sequence of `count` ints (0: of any length but empty).
+  std::optional<std::vector<int>> integers(const char* name, std::size_t count = 0);
+
+  /// Removes `name` and returns its value (None when absent), for a keyword read another way.
+  pybind11::object take(const char* name);
 
   /// TypeError for a keyword none of the above asked for.
   void finish() const;
@@ -29,8 +33,6 @@ public:
   [[noreturn]] void wrongType(const char* name, const char* wanted, const pybind11::handle& value) const;
 
 private:
-  pybind11::object take(const char* name);
-
   std::string function_;
   pybind11::dict remaining_;
 };

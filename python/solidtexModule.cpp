@@ -1,16 +1,12 @@
-// The Python module. particles() and analyze() call the library (a numpy image or a path in, numpy
-// arrays and the report out, no file unless asked for); synthesize() and compare() still run the
-// command of the same name through the command line's parser and job and read back what it wrote.
+// The Python module: each function calls the library behind the command of the same name, with a
+// numpy array or a path in and numpy arrays and the report out; no file is written unless asked for.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <stdlib.h>
 
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <mutex>
 #include <new>
 #include <optional>
@@ -18,8 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/application.h"
-#include "cli/commandLine.h"
+#include "Version.h"
 #include "common/Error.h"
 #include "common/OutputFiles.h"
 #include "common/ThreadLimit.h"
@@ -27,187 +22,33 @@
 #include "common/memoryBudget.h"
 #include "particleSolid/makeParticleSolid.h"
 #include "particleSolid/particleSolidReport.h"
+#include "pipeline/compareJob.h"
 #include "pipeline/jobSupport.h"
+#include "pipeline/synthesizeJob.h"
+#include "pipeline/synthesizeVolumeJob.h"
 #include "python/keywords.h"
 #include "segmentation/drawLabels.h"
 #include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
+#include "synthesis/FrameField.h"
+#include "synthesis/synthesizeFromVolume.h"
+#include "synthesis/synthesizeSolid.h"
+#include "validation/continuousQuality.h"
 #include "voxel/vdbIO.h"
 
 namespace py = pybind11;
-namespace fs = std::filesystem;
 
 namespace solidtex::python {
 namespace {
 
-/// A failure that the command line reports with exit code 1 (bad input, an unwritable output, too
-/// little memory); a wrong command line raises ValueError, as it exits with 2. Never destroyed: the
-/// interpreter may be gone by then.
+/// solidtex.Error: input the library cannot use (a photo it cannot read, an unwritable output, too
+/// little memory); options out of range raise ValueError. Never destroyed: the interpreter may be
+/// gone by then.
 py::object* errorType = nullptr;
 
-/// A command owns process-wide state while it runs (one OutputFiles, stdout, stderr's descriptor,
-/// the address-space cap): Python threads take turns.
+/// A call owns process-wide state while it runs (one OutputFiles, the thread limit, stderr's
+/// descriptor while libraries print): Python threads take turns.
 std::mutex commandMutex;
-
-/// Keyword arguments as options: size=64 is --size 64, no_split=True is --no-split, dims=(64, 64,
-/// 32) is --dims 64 64 32; None and False leave an option out.
-std::vector<std::string> optionsOf(const py::kwargs& kwargs) {
-  std::vector<std::string> options;
-  for (const auto& [key, value] : kwargs) {
-    std::string name = "--" + py::cast<std::string>(key);
-    for (char& c : name) c = c == '_' ? '-' : c;
-    if (value.is_none() || (py::isinstance<py::bool_>(value) && !py::cast<bool>(value))) continue;
-    options.push_back(name);
-    if (py::isinstance<py::bool_>(value)) continue;
-    if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-      for (const auto& item : value) options.push_back(py::str(item));
-    } else {
-      options.push_back(py::str(value));
-    }
-  }
-  return options;
-}
-
-/// The command's stdout summary line is for a terminal, not for a library call.
-class SilentStdout {
-public:
-  SilentStdout() : saved_(std::cout.rdbuf(nullptr)) {}
-  ~SilentStdout() {
-    std::cout.rdbuf(saved_);
-    std::cout.clear();
-  }
-
-private:
-  std::streambuf* saved_;
-};
-
-/// Runs `solidtex ARGUMENTS` in this process: ValueError for a wrong command line, solidtex.Error
-/// for a failed command, MemoryError when memory ran out; the messages are the command line's.
-void runCommand(const std::vector<std::string>& arguments) {
-  std::optional<std::string> usage, failure;
-  bool outOfMemory = false;
-  {
-    py::gil_scoped_release released;
-    const std::lock_guard<std::mutex> oneAtATime(commandMutex);
-    const auto application = cli::makeApplication(cli::volumeCommandLine(arguments));
-    CLI::App& app = application->app;
-    std::vector<std::string> argv{"solidtex"};
-    argv.insert(argv.end(), arguments.begin(), arguments.end());
-    std::vector<char*> pointers;
-    for (std::string& argument : argv) pointers.push_back(argument.data());
-    try {
-      app.parse(int(pointers.size()), pointers.data());
-      const SilentStdout silent;
-      application->actions.at(app.get_subcommands().front()->get_name())();
-    } catch (const CLI::ParseError& e) {
-      usage = cli::usageMessage(app, e.what());
-    } catch (const OptionError& e) {
-      usage = cli::usageMessage(app, e.what());
-    } catch (const std::bad_alloc&) {
-      outOfMemory = true;
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-  }
-  if (usage) throw py::value_error(*usage);
-  if (outOfMemory) throw std::bad_alloc();  // pybind11 raises MemoryError
-  if (failure) {
-    PyErr_SetString(errorType->ptr(), failure->c_str());
-    throw py::error_already_set();
-  }
-}
-
-/// A folder for what the caller did not ask to keep, removed with it.
-class ScratchFolder {
-public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "solidtex-python-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder");
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-  fs::path path_;
-};
-
-py::object readJson(const std::string& path) {
-  std::ifstream in(path);
-  const std::string text{std::istreambuf_iterator<char>(in), {}};
-  return py::module_::import("json").attr("loads")(text);
-}
-
-/// `option`'s value among the keyword arguments, or a file of `scratch` that is then passed as it.
-std::string outputPath(py::kwargs& kwargs, const char* option, const ScratchFolder& scratch,
-                       const std::string& name) {
-  if (kwargs.contains(option) && !kwargs[option].is_none()) return py::str(kwargs[option]);
-  kwargs[option] = scratch.file(name);
-  return scratch.file(name);
-}
-
-/// Progress lines stay off unless quiet=False is given.
-void quietUnlessAsked(py::kwargs& kwargs) {
-  if (!kwargs.contains("quiet")) kwargs["quiet"] = true;
-}
-
-template <typename T>
-py::array_t<T> arrayOf(const std::vector<T>& values, std::vector<py::ssize_t> shape) {
-  py::array_t<T> array(shape);
-  std::copy(values.begin(), values.end(), array.mutable_data());
-  return array;
-}
-
-/// The volume's grids as (Z, Y, X[, 3]) arrays, x fastest as in the .vdb's dense form.
-py::dict volumeArrays(const std::string& path) {
-  const SolidVolume volume = readVdb(path);
-  const Dims& d = volume.dims;
-  const std::vector<py::ssize_t> zyx{d.z, d.y, d.x};
-  py::dict arrays;
-  if (!volume.color.empty()) {
-    std::vector<float> rgb(volume.color.size() * 3);
-    for (std::size_t i = 0; i < volume.color.size(); ++i)
-      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = volume.color[i][c];
-    arrays["color"] = arrayOf(rgb, {d.z, d.y, d.x, 3});
-  }
-  if (!volume.particleId.empty()) arrays["particle_id"] = arrayOf(volume.particleId, zyx);
-  if (!volume.density.empty()) arrays["density"] = arrayOf(volume.density, zyx);
-  return arrays;
-}
-
-/// `solidtex COMMAND INPUTS -o OUT --report R ...`: the report and the volume's arrays.
-py::dict runVolumeCommand(const std::string& command, const std::vector<std::string>& inputs,
-                          const std::optional<std::string>& output, py::kwargs kwargs) {
-  const ScratchFolder scratch;
-  const std::string vdb = output.value_or(scratch.file("volume.vdb"));
-  const std::string report = outputPath(kwargs, "report", scratch, "report.json");
-  quietUnlessAsked(kwargs);
-  std::vector<std::string> arguments{command};
-  arguments.insert(arguments.end(), inputs.begin(), inputs.end());
-  arguments.insert(arguments.end(), {"-o", vdb});
-  const auto options = optionsOf(kwargs);
-  arguments.insert(arguments.end(), options.begin(), options.end());
-  runCommand(arguments);
-  py::dict result = volumeArrays(vdb);
-  result["report"] = readJson(report);
-  return result;
-}
-
-/// `solidtex COMMAND INPUTS --report R ...`: the report.
-py::object runReportCommand(const std::string& command, const std::vector<std::string>& inputs,
-                            py::kwargs kwargs) {
-  const ScratchFolder scratch;
-  const std::string report = outputPath(kwargs, "report", scratch, "report.json");
-  std::vector<std::string> arguments{command};
-  arguments.insert(arguments.end(), inputs.begin(), inputs.end());
-  const auto options = optionsOf(kwargs);
-  arguments.insert(arguments.end(), options.begin(), options.end());
-  runCommand(arguments);
-  return readJson(report);
-}
 
 /// Raised from a progress report when Python has a signal to handle (Ctrl-C): the work unwinds and
 /// the pending KeyboardInterrupt is raised in its place.
@@ -318,6 +159,15 @@ py::array_t<T> ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shap
   return py::array_t<T>(shape, owned->data(), free);
 }
 
+/// Colours as one float array, three values per voxel.
+std::vector<float> interleaved(std::vector<Rgb>&& colors) {
+  std::vector<float> rgb(colors.size() * 3);
+  for (std::size_t i = 0; i < colors.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = colors[i][c];
+  colors = {};
+  return rgb;
+}
+
 py::object toPython(const nlohmann::json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
 }
@@ -392,13 +242,9 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
     outputs->commit();
   });
   const Dims d = solid.volume.dims;
-  std::vector<float> rgb(solid.volume.color.size() * 3);
-  for (std::size_t i = 0; i < solid.volume.color.size(); ++i)
-    for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = solid.volume.color[i][c];
-  solid.volume.color = {};
   py::dict result;
   result["particle_id"] = ownedArray(std::move(solid.volume.particleId), {d.z, d.y, d.x});
-  result["color"] = ownedArray(std::move(rgb), {d.z, d.y, d.x, 3});
+  result["color"] = ownedArray(interleaved(std::move(solid.volume.color)), {d.z, d.y, d.x, 3});
   result["report"] = toPython(report);
   return result;
 }
@@ -433,15 +279,231 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
   return toPython(report);
 }
 
+/// The pixels of an exemplar photo given as a numpy array: (H, W), or (H, W, C) with C <= 4.
+bool isPhotoArray(const py::array& array) {
+  return array.ndim() == 2 || (array.ndim() == 3 && array.shape(2) <= 4);
+}
+
+/// A volume exemplar given as a numpy array: (Z, Y, X) densities or (Z, Y, X, 3) linear RGB.
+DenseVolume volumeOf(const py::array& array) {
+  if (array.ndim() == 4 && array.shape(3) != 3)
+    throw py::value_error("a volume exemplar is (Z, Y, X) densities or (Z, Y, X, 3) colours");
+  const auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!values) throw py::value_error("a volume exemplar must hold numbers");
+  DenseVolume volume;
+  volume.dims = {int(array.shape(2)), int(array.shape(1)), int(array.shape(0))};
+  volume.channels = array.ndim() == 4 ? 3 : 1;
+  volume.values.assign(values.data(), values.data() + values.size());
+  return volume;
+}
+
+py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywords& keywords) {
+  SynthesisOptions options;
+  runParsing([&] {
+    options.method = parseMethod(keywords.text("method").value_or("chen-wang"));
+    options.distance = parseDistance(keywords.text("distance").value_or("rgb"));
+    options.similaritySearch = parseSimilaritySearch(keywords.text("similarity_search").value_or("auto"));
+  });
+  options.size = int(keywords.integer("size").value_or(options.size));
+  options.levels = int(keywords.integer("levels").value_or(options.levels));
+  options.waveletLevels = int(keywords.integer("wavelet_levels").value_or(options.waveletLevels));
+  if (const auto sides = keywords.integers("neighborhoods")) options.neighborhoods = *sides;
+  options.k = int(keywords.integer("k").value_or(options.k));
+  options.iterations = int(keywords.integer("iterations").value_or(options.iterations));
+  options.pcaDims = int(keywords.integer("pca_dims").value_or(options.pcaDims));
+  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  options.threads = int(keywords.integer("threads").value_or(0));
+  const std::optional<std::string> control = keywords.path("control");
+  const bool measure = keywords.flag("measure").value_or(true),
+             progress = keywords.flag("progress").value_or(false);
+  keywords.finish();
+  options.exemplarName = std::filesystem::path(name).filename().string();
+  SynthesisResult result;
+  nlohmann::json report;
+  runReleased([&] {
+    if (control) options.control = loadPhoto(*control);
+    ProgressLine line(progress);
+    options.progress = [&line](const std::string& step, double fraction) {
+      line.update(step, fraction);
+      checkInterruption();
+    };
+    result = synthesizeSolid(exemplar, options);
+    line.done();
+    std::optional<ContinuousQuality> quality;
+    if (measure) quality = measureContinuousSolid(result.volume, exemplar, {}, {});
+    report = synthesisReport(options, result.statistics, quality ? &*quality : nullptr, {});
+    report["solidtex_version"] = SOLIDTEX_VERSION;
+    report["command"] = "synthesize";
+  });
+  const Dims d = result.volume.dims;
+  py::dict arrays;
+  arrays["color"] = ownedArray(interleaved(std::move(result.volume.color)), {d.z, d.y, d.x, 3});
+  arrays["report"] = toPython(report);
+  return arrays;
+}
+
+py::dict volumeSynthesis(const DenseVolume& exemplar, const std::string& name, Keywords& keywords) {
+  VolumeSynthesisOptions options;
+  const int size = int(keywords.integer("size").value_or(64));
+  options.dims = {size, size, size};
+  if (const auto dims = keywords.integers("dims", 3)) options.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
+  if (const auto box = keywords.integers("region", 6))
+    options.region = VoxelBox{{(*box)[0], (*box)[1], (*box)[2]}, {(*box)[3], (*box)[4], (*box)[5]}};
+  options.levels = int(keywords.integer("levels").value_or(options.levels));
+  options.jitter = keywords.number("jitter").value_or(options.jitter);
+  options.k = int(keywords.integer("k").value_or(options.k));
+  options.exclusion = int(keywords.integer("exclusion").value_or(options.exclusion));
+  options.window = int(keywords.integer("appearance").value_or(options.window));
+  options.pcaDims = int(keywords.integer("pca_dims").value_or(options.pcaDims));
+  options.corrections = int(keywords.integer("corrections").value_or(options.corrections));
+  options.periodic = keywords.flag("periodic").value_or(false);
+  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  options.threads = int(keywords.integer("threads").value_or(0));
+  const std::optional<std::string> fieldName = keywords.text("field");
+  const bool measure = keywords.flag("measure").value_or(true),
+             progress = keywords.flag("progress").value_or(false);
+  keywords.finish();
+  VolumeSynthesisResult result;
+  nlohmann::json report;
+  runReleased([&] {
+    std::optional<FrameField> field;
+    if (fieldName)
+      field = std::filesystem::path(*fieldName).extension() == ".vdb"
+                  ? readFrameField(*fieldName, options.dims)
+                  : builtinFrameField(*fieldName, options.dims);
+    options.field = field ? &*field : nullptr;
+    ProgressLine line(progress);
+    options.progress = [&line](const std::string& step, double fraction) {
+      line.update(step, fraction);
+      checkInterruption();
+    };
+    result = synthesizeFromVolume(exemplar, options);
+    line.done();
+    options.field = nullptr;
+    report = volumeSynthesisReport(result, options, exemplar, name, fieldName.value_or("none"));
+    if (measure) report["quality"] = volumeQualityReport(result.values, exemplar, {});
+  });
+  const Dims d = result.values.dims;
+  py::dict arrays;
+  if (result.values.channels == 3)
+    arrays["color"] = ownedArray(std::move(result.values.values), {d.z, d.y, d.x, 3});
+  else
+    arrays["density"] = ownedArray(std::move(result.values.values), {d.z, d.y, d.x});
+  arrays["report"] = toPython(report);
+  return arrays;
+}
+
+/// synthesize(exemplar, **options): a continuous solid from a photo (path or array) or a volume
+/// (a .vdb path or a (Z, Y, X[, 3]) array), as arrays and the report.
+py::dict synthesize(const py::object& exemplar, const py::kwargs& kwargs) {
+  Keywords keywords("synthesize", kwargs);
+  const std::optional<std::string> path = asPath(exemplar);
+  if (path && std::filesystem::path(*path).extension() == ".vdb") {
+    DenseVolume volume;
+    runReleased([&] { volume = readVolumeExemplar(*path); });
+    return volumeSynthesis(volume, std::filesystem::path(*path).filename().string(), keywords);
+  }
+  if (!path && py::isinstance<py::array>(exemplar) &&
+      !isPhotoArray(py::reinterpret_borrow<py::array>(exemplar)))
+    return volumeSynthesis(volumeOf(py::reinterpret_borrow<py::array>(exemplar)), "array", keywords);
+  std::string name;
+  const cv::Mat photo = photoOf(exemplar, name);
+  return photoSynthesis(photo, name, keywords);
+}
+
+/// A solid given as a .vdb path, a dict of arrays as particles() and synthesize() return, or one
+/// array: (Z, Y, X, 3) linear RGB, or (Z, Y, X) int32 particle ids.
+SolidVolume solidOf(const py::handle& solid, std::string& name) {
+  if (const std::optional<std::string> path = asPath(solid)) {
+    name = *path;
+    SolidVolume volume;
+    runReleased([&] { volume = readVdb(*path); });
+    return volume;
+  }
+  name = "array";
+  py::dict grids;
+  if (py::isinstance<py::dict>(solid)) {
+    grids = py::reinterpret_borrow<py::dict>(solid);
+  } else if (py::isinstance<py::array>(solid)) {
+    const auto array = py::reinterpret_borrow<py::array>(solid);
+    grids[array.ndim() == 4 ? "color" : "particle_id"] = array;
+  } else {
+    throw py::type_error("volume must be a path, a dict of arrays or a numpy array, not " +
+                         std::string(py::str(py::type::handle_of(solid).attr("__name__"))));
+  }
+  SolidVolume volume;
+  const auto take = [&](const char* key, int ndim) -> py::array {
+    if (!grids.contains(key)) return {};
+    const auto array = py::reinterpret_borrow<py::array>(grids[key]);
+    if (array.ndim() != ndim) throw py::value_error(std::string("volume's ") + key + " has the wrong shape");
+    const Dims dims{int(array.shape(2)), int(array.shape(1)), int(array.shape(0))};
+    if (volume.dims.count() > 0 && !(volume.dims == dims))
+      throw py::value_error("the volume's arrays differ in shape");
+    volume.dims = dims;
+    return array;
+  };
+  if (const py::array ids = take("particle_id", 3)) {
+    const auto values = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(ids);
+    volume.particleId.assign(values.data(), values.data() + values.size());
+  }
+  if (const py::array color = take("color", 4)) {
+    const auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(color);
+    volume.color.resize(std::size_t(values.size() / 3));
+    std::memcpy(volume.color.data(), values.data(), std::size_t(values.size()) * sizeof(float));
+  }
+  if (const py::array density = take("density", 3)) {
+    const auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(density);
+    volume.density.assign(values.data(), values.data() + values.size());
+  }
+  if (volume.dims.count() == 0)
+    throw py::value_error("the volume has no particle_id, color or density array");
+  // What the .vdb's metadata would say: the scale, and whether the faces cut particles.
+  if (grids.contains("report")) {
+    const py::dict report = grids["report"];
+    if (report.contains("volume") && py::dict(report["volume"]).contains("voxels_per_pixel"))
+      volume.metadata["voxels_per_pixel"] = py::str(py::dict(report["volume"])["voxels_per_pixel"]);
+    if (report.contains("boundary")) volume.metadata["boundary"] = py::str(report["boundary"]);
+  }
+  return volume;
+}
+
+/// compare(photo, volume, **options): how well a solid matches its photo, as a dict.
+py::object compare(const py::object& photo, const py::object& solid, const py::kwargs& kwargs) {
+  Keywords keywords("compare", kwargs);
+  CompareJob job;
+  runParsing([&] { job.mode = parseCompareMode(keywords.text("mode").value_or("auto")); });
+  job.segmentation = segmentationOptions(keywords);
+  job.voxelsPerPixel = keywords.number("scale").value_or(0);
+  job.sections.offsetsPerAxis = int(keywords.integer("axis_planes").value_or(job.sections.offsetsPerAxis));
+  job.sections.obliquePlanes = int(keywords.integer("oblique_planes").value_or(job.sections.obliquePlanes));
+  job.sections.seed = job.quality.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  job.truth = keywords.path("truth");
+  const py::object referenceArgument =
+      kwargs.contains("reference") ? py::object(kwargs["reference"]) : py::none();
+  keywords.take("reference");
+  keywords.finish();
+  const cv::Mat image = photoOf(photo, job.photo);
+  const SolidVolume volume = solidOf(solid, job.volume);
+  cv::Mat reference;
+  if (!referenceArgument.is_none()) {
+    std::string name;
+    reference = photoOf(referenceArgument, name);
+    job.reference = name;
+  }
+  nlohmann::json report;
+  runReleased([&] { report = compareSolid(job, image, volume, reference); });
+  return toPython(report);
+}
+
 }  // namespace
 }  // namespace solidtex::python
 
 PYBIND11_MODULE(solidtex, m) {
   using namespace solidtex::python;
   m.doc() =
-      "solidtex: one photo of a material in, a 3D solid texture out. particles and analyze take a "
-      "numpy image or a path and return arrays and dicts; synthesize and compare run the command "
-      "of the same name with the same options (size=64 is --size 64) and return what it wrote.";
+      "solidtex: one photo of a material in, a 3D solid texture out. Each function takes numpy arrays "
+      "or paths and returns numpy arrays and the report as a dict; keywords are the command line's "
+      "options spelled as Python names (min_area for --min-area).";
   errorType = new py::object(py::exception<std::runtime_error>(m, "Error", PyExc_RuntimeError));
   m.def("analyze", &analyze, py::arg("photo"),
         "Segments a photo of particles (a path, or a numpy array: (H, W), (H, W, 3) or (H, W, 4), uint8 "
@@ -455,18 +517,18 @@ PYBIND11_MODULE(solidtex, m) {
         "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, seed, threads, mask, "
         "invert, split, min_area; output (.vdb) and report (.json) write files; progress shows the "
         "progress line. Ctrl-C stops it and leaves no file.");
-  m.def(
-      "synthesize",
-      [](const std::string& exemplar, std::optional<std::string> output, py::kwargs kwargs) {
-        return runVolumeCommand("synthesize", {exemplar}, output, kwargs);
-      },
-      py::arg("exemplar"), py::arg("output") = py::none(),
-      "Synthesises a continuous solid from a photo or a .vdb exemplar: a dict of numpy arrays (color, "
-      "density when the exemplar has one) and report.");
-  m.def(
-      "compare",
-      [](const std::string& photo, const std::string& volume, py::kwargs kwargs) {
-        return runReportCommand("compare", {photo, volume}, kwargs);
-      },
-      py::arg("photo"), py::arg("volume"), "Compares a solid with its photo: the report as a dict.");
+  m.def("synthesize", &synthesize, py::arg("exemplar"),
+        "Synthesises a continuous solid from a photo (a path or a numpy image, as analyze takes) or a "
+        "volume (a .vdb path, or a numpy array (Z, Y, X) of densities or (Z, Y, X, 3) of linear RGB): a "
+        "dict of numpy arrays (color, or density for a density volume) and the report. Keywords as the "
+        "command line's options: size, seed, threads, levels, k, pca_dims; photos: method, "
+        "wavelet_levels, neighborhoods, distance, similarity_search, iterations, control; volumes: dims, "
+        "region, jitter, exclusion, appearance, corrections, field, periodic. measure=False skips the "
+        "quality measure; progress=True shows the progress line.");
+  m.def("compare", &compare, py::arg("photo"), py::arg("volume"),
+        "Compares a solid with the photo it was made from: the report as a dict. photo as analyze takes; "
+        "volume a .vdb path, the dict particles() or synthesize() returns, or an array ((Z, Y, X, 3) "
+        "colours or (Z, Y, X) particle ids). Keywords: mode (auto, particles, continuous), reference (a "
+        "second photo), scale, axis_planes, oblique_planes, seed, truth (a .vdb), mask, invert, split, "
+        "min_area.");
 }

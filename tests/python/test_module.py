@@ -16,6 +16,7 @@ import solidtex
 
 CLI = os.environ["SOLIDTEX_CLI"]
 COINS = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "particles", "coins.png")
+CT = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "volumes", "ct_stent_64.vdb")
 
 
 def cli(*arguments, **kwargs):
@@ -93,8 +94,49 @@ class InMemoryTest(unittest.TestCase):
         np.testing.assert_array_equal(solid["particle_id"], self.solid["particle_id"])
         with open(report) as f:
             self.assertEqual(json.load(f)["volume"], solid["report"]["volume"])
-        comparison = solidtex.compare(COINS, vdb, axis_planes=4, oblique_planes=0)
-        self.assertIn("sections", json.dumps(comparison))
+        from_file = solidtex.compare(self.photo, vdb, axis_planes=4, oblique_planes=0)
+        from_arrays = solidtex.compare(self.photo, solid, axis_planes=4, oblique_planes=0)
+        self.assertEqual(from_file["mode"], "particles")
+        self.assertEqual(from_arrays | {"volume": vdb}, from_file)
+
+
+class SynthesizeTest(unittest.TestCase):
+    def test_a_numpy_volume_exemplar_gives_a_volume_of_its_values_with_its_layers(self):
+        rng = np.random.default_rng(1)
+        z = np.arange(32)[:, None, None]
+        layers = np.broadcast_to(0.5 + 0.4 * np.sin(z / 3.0), (32, 32, 32))
+        exemplar = (layers + 0.05 * rng.normal(size=(32, 32, 32))).astype(np.float32)
+        made = solidtex.synthesize(exemplar, size=32, measure=False)
+        density = made["density"]
+        self.assertEqual(density.shape, (32, 32, 32))
+        self.assertTrue(np.isin(density, exemplar).all())  # every voxel is a copy of an exemplar voxel
+        # The layers stay across z: slices' means vary along z, hardly along x or y.
+        along = [density.mean(axis=axes).std() for axes in [(1, 2), (0, 2), (0, 1)]]
+        self.assertGreater(along[0], 4 * max(along[1], along[2]))
+        self.assertEqual(made["report"]["exemplar"]["name"], "array")
+
+    def test_a_vdb_exemplar_gives_the_command_lines_bytes(self):
+        with tempfile.TemporaryDirectory() as folder:
+            npy = os.path.join(folder, "npy")
+            run = cli("synthesize", CT, "-o", os.path.join(folder, "s.vdb"), "--size", "16", "--no-quality",
+                      "--npy", npy, "--quiet")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            made = solidtex.synthesize(CT, size=16, measure=False)
+            self.assertEqual(np.load(os.path.join(npy, "density.npy")).tobytes(), made["density"].tobytes())
+
+    def test_a_numpy_photo_gives_the_command_lines_bytes_and_compares_with_itself(self):
+        photo = np.asarray(Image.open(COINS).convert("RGB"))[:64, :64].copy()
+        with tempfile.TemporaryDirectory() as folder:
+            png, npy = os.path.join(folder, "crop.png"), os.path.join(folder, "npy")
+            Image.fromarray(photo).save(png)
+            run = cli("synthesize", png, "-o", os.path.join(folder, "s.vdb"), "--size", "32", "--no-quality",
+                      "--npy", npy, "--quiet")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            made = solidtex.synthesize(photo, size=32, measure=False)
+            self.assertEqual(np.load(os.path.join(npy, "color.npy")).tobytes(), made["color"].tobytes())
+        comparison = solidtex.compare(photo, made, mode="continuous")
+        self.assertEqual(comparison["mode"], "continuous")
+        self.assertEqual(comparison["dims"], [32, 32, 32])
 
 
 class KeywordsTest(unittest.TestCase):
