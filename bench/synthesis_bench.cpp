@@ -15,7 +15,6 @@
 
 #include "common/memoryBudget.h"
 #include "common/srgb.h"
-#include "pipeline/jobSupport.h"
 #include "pipeline/synthesizeJob.h"
 #include "synthesis/synthesizeSolid.h"
 #include "validation/continuousQuality.h"

@@ -6,7 +6,6 @@
 #include "cli/optionChecks.h"
 #include "common/ThreadLimit.h"
 #include "particles/fitHullSmoothing.h"
-#include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
 
 namespace solidtex::cli {
@@ -36,8 +35,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
           "--scale", job->voxelsPerPixel,
           "Voxels per photo pixel (default: 1, less when particles would exceed a quarter of the volume)")
       ->check(aboveAtMost(0, 64));
-  command->add_option("--placer", *placer, "Spaciousness field: discrete, edt, brute or delaunay")
-      ->capture_default_str();
+  command->add_option("--placer", *placer, "Spaciousness field: " + placerNames())->capture_default_str();
   command
       ->add_option("--sizing", *sizing,
                    "sections: particle sizes whose random sections match the photo's areas; bbox: the "

@@ -4,7 +4,6 @@
 
 #include "cli/commands.h"
 #include "common/ThreadLimit.h"
-#include "pipeline/jobSupport.h"
 #include "pipeline/spaciousnessJob.h"
 
 namespace solidtex::cli {

@@ -1,6 +1,7 @@
 #include "pipeline/analyzeJob.h"
 
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
+#include "pipeline/warnOfDroppedRegions.h"
 #include "segmentation/drawLabels.h"
 #include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"

@@ -10,7 +10,7 @@
 #include "common/distributionDistance.h"
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/continuousQualityReport.h"
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
 #include "segmentation/imageIO.h"
 #include "validation/compareSections.h"
 #include "validation/particleVolumes.h"

@@ -1,10 +1,11 @@
 #include "pipeline/spaciousnessJob.h"
 
 #include "common/Error.h"
+#include "common/ProgressLine.h"
 #include "common/memoryBudget.h"
 #include "particleSolid/makeParticleSolid.h"
 #include "particles/ParticleFactory.h"
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
 #include "pipeline/spaciousnessPlot.h"
 #include "placement/placeLargestFirst.h"
 #include "segmentation/imageIO.h"

@@ -4,9 +4,10 @@
 
 #include "Version.h"
 #include "common/Error.h"
+#include "common/ProgressLine.h"
 #include "common/memoryBudget.h"
 #include "pipeline/continuousQualityReport.h"
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
 #include "segmentation/imageIO.h"
 
 namespace solidtex {

@@ -8,10 +8,11 @@
 
 #include "Version.h"
 #include "common/Error.h"
+#include "common/ProgressLine.h"
 #include "common/ThreadLimit.h"
 #include "common/memoryBudget.h"
 #include "common/srgb.h"
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
 #include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
 

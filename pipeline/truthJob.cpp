@@ -4,7 +4,7 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
-#include "pipeline/jobSupport.h"
+#include "pipeline/jobOutputs.h"
 #include "segmentation/imageIO.h"
 #include "voxel/vdbIO.h"
 

@@ -1,45 +1,67 @@
 #include "placement/SpaciousnessField.h"
 
+#include <iterator>
+
 #include "common/Error.h"
 #include "placement/detail/fieldFactories.h"
 #include "placement/detail/voxelSets.h"
 
 namespace solidtex {
 
-PlacerKind parsePlacerKind(const std::string& name) {
-  for (PlacerKind kind : {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt, PlacerKind::Delaunay})
-    if (name == placerName(kind)) return kind;
-  throw OptionError("unknown placer '" + name + "': expected discrete, brute, edt or delaunay");
+namespace {
+
+using FieldFactory = std::unique_ptr<SpaciousnessField> (*)(Dims dims, float maxRadius, bool periodic);
+
+struct PlacerRow {
+  PlacerKind kind;
+  const char* name;
+  FieldFactory make;
+};
+
+const PlacerRow kPlacers[] = {
+    {PlacerKind::Discrete, "discrete", detail::makeDiscreteVoronoiField},
+    {PlacerKind::Brute, "brute", detail::makeBruteForceField},
+    {PlacerKind::Edt, "edt", detail::makeEdtField},
+    {PlacerKind::Delaunay, "delaunay", detail::makeDelaunayField},
+};
+
+const PlacerRow& rowOf(PlacerKind kind) {
+  for (const PlacerRow& row : kPlacers)
+    if (row.kind == kind) return row;
+  throw OptionError("unknown placer kind");
 }
 
-const char* placerName(PlacerKind kind) {
-  switch (kind) {
-    case PlacerKind::Discrete:
-      return "discrete";
-    case PlacerKind::Brute:
-      return "brute";
-    case PlacerKind::Edt:
-      return "edt";
-    case PlacerKind::Delaunay:
-      return "delaunay";
-  }
-  return "unknown";
+}  // namespace
+
+const std::vector<PlacerKind>& placerKinds() {
+  static const std::vector<PlacerKind> kinds = [] {
+    std::vector<PlacerKind> all;
+    for (const PlacerRow& row : kPlacers) all.push_back(row.kind);
+    return all;
+  }();
+  return kinds;
+}
+
+PlacerKind parsePlacerKind(const std::string& name) {
+  for (const PlacerRow& row : kPlacers)
+    if (name == row.name) return row.kind;
+  throw OptionError("unknown placer '" + name + "': expected " + placerNames());
+}
+
+const char* placerName(PlacerKind kind) { return rowOf(kind).name; }
+
+std::string placerNames() {
+  std::string names;
+  const std::size_t count = std::size(kPlacers);
+  for (std::size_t i = 0; i < count; ++i)
+    names += (i == 0 ? "" : i + 1 == count ? " or " : ", ") + std::string(kPlacers[i].name);
+  return names;
 }
 
 std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius,
                                                          bool periodic) {
   detail::checkFieldArguments(dims, maxRadius);
-  switch (kind) {
-    case PlacerKind::Discrete:
-      return detail::makeDiscreteVoronoiField(dims, maxRadius, periodic);
-    case PlacerKind::Brute:
-      return detail::makeBruteForceField(dims, maxRadius, periodic);
-    case PlacerKind::Edt:
-      return detail::makeEdtField(dims, maxRadius, periodic);
-    case PlacerKind::Delaunay:
-      return detail::makeDelaunayField(dims, maxRadius, periodic);
-  }
-  throw OptionError("unknown placer kind");
+  return rowOf(kind).make(dims, maxRadius, periodic);
 }
 
 }  // namespace solidtex

@@ -9,12 +9,18 @@
 
 namespace solidtex {
 
-/// How spaciousness is computed (paper 3.7).
+/// How spaciousness is computed (paper 3.7). A new kind is a value here, its row in the table of
+/// SpaciousnessField.cpp, and its field's own file.
 enum class PlacerKind { Discrete, Brute, Edt, Delaunay };
 
-/// "discrete" | "brute" | "edt" | "delaunay"; throws InputError otherwise.
+/// Every kind, in the table's order: what parsers, help texts and evaluations go through.
+const std::vector<PlacerKind>& placerKinds();
+
+/// Parses a kind's name; throws OptionError naming the kinds otherwise.
 PlacerKind parsePlacerKind(const std::string& name);
 const char* placerName(PlacerKind kind);
+/// "discrete, brute, edt or delaunay": every kind's name, as help texts list them.
+std::string placerNames();
 
 /// Spaciousness of every voxel of a volume: the radius, in voxels, of the largest ball centred at
 /// the voxel's centre that holds no occupied voxel centre. The walls count as occupied layers at

@@ -8,11 +8,11 @@
 #include <sstream>
 #include <string>
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/ThreadLimit.h"
 #include "common/secondsSince.h"
 #include "synthesis/detail/AppearanceSpace.h"
 
@@ -451,10 +451,7 @@ void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const Den
 VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   checkOptions(exemplar, o);
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (o.threads > 0)
-    threadLimit =
-        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+  const ThreadLimit threadLimit(o.threads);
   const ExemplarDomain domain = synthesis::exemplarDomain(exemplar.dims, o.window);
   const int allowed = correctableLevels(domain, o.window);
   if (o.levels > allowed)

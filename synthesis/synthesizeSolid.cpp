@@ -5,10 +5,9 @@
 #include <optional>
 #include <sstream>
 
-#include <tbb/global_control.h>
-
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/ThreadLimit.h"
 #include "common/interruption.h"
 #include "common/secondsSince.h"
 #include "common/srgb.h"
@@ -323,10 +322,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   SynthesisResult result;
   SynthesisStatistics& stats = result.statistics;
   stats.neighborhoods = validate(exemplarSrgb, o);
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (o.threads > 0)
-    threadLimit =
-        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+  const ThreadLimit threadLimit(o.threads);
 
   // Skeletal synthesis optimises the coarser levels only and rebuilds the finer ones from the
   // exemplar's Haar details.

@@ -8,11 +8,11 @@
 #include <numeric>
 #include <sstream>
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/ThreadLimit.h"
 #include "common/interruption.h"
 #include "common/secondsSince.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
@@ -274,10 +274,7 @@ TextureSynthesisResult synthesizeTexture(const cv::Mat& exemplarSrgb, const Text
   const auto start = Clock::now();
   TextureSynthesisResult result;
   result.neighborhoods = validate(exemplarSrgb, o);
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (o.threads > 0)
-    threadLimit =
-        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+  const ThreadLimit threadLimit(o.threads);
 
   const int rebuilt = o.method == TextureMethod::Skeletal ? o.waveletLevels : 0;
   RgbImage finest = toRgbImage(exemplarSrgb);

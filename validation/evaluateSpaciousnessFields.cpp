@@ -13,9 +13,6 @@
 namespace solidtex {
 namespace {
 
-constexpr PlacerKind kKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt,
-                                 PlacerKind::Delaunay};
-
 // Each particle's voxels, in id order: the order they were placed in.
 std::vector<std::vector<Voxel>> voxelsPerParticle(const Dims& dims, const std::vector<std::int32_t>& ids) {
   const std::int32_t count = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
@@ -100,7 +97,7 @@ SpaciousnessEvaluation evaluateSpaciousnessFields(const Dims& dims, const std::v
     for (auto& voxels : particles) unwrap(voxels, dims);
   SpaciousnessEvaluation evaluation;
   std::vector<std::unique_ptr<SpaciousnessField>> built;
-  for (const PlacerKind kind : kKinds) {
+  for (const PlacerKind kind : placerKinds()) {
     tell(std::string("building the ") + placerName(kind) + " field");
     const auto start = std::chrono::steady_clock::now();
     built.push_back(makeSpaciousnessField(kind, dims, radiusCap, periodic));

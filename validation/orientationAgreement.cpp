@@ -10,6 +10,8 @@
 #include <tbb/parallel_for.h>
 #include <Eigen/Eigenvalues>
 
+#include "common/gaussianFilter.h"
+
 namespace solidtex {
 namespace {
 
@@ -17,17 +19,6 @@ namespace {
 using Kernel = std::vector<float>;
 
 int radiusOf(double sigma) { return std::max(1, int(std::ceil(3 * sigma))); }
-
-Kernel gaussian(double sigma) {
-  if (sigma <= 0) return {1.f};
-  const int r = radiusOf(sigma);
-  std::vector<double> w(std::size_t(2 * r + 1));
-  double sum = 0;
-  for (int t = -r; t <= r; ++t) sum += w[std::size_t(t + r)] = std::exp(-t * t / (2 * sigma * sigma));
-  Kernel k(w.size());
-  for (std::size_t i = 0; i < w.size(); ++i) k[i] = float(w[i] / sum);
-  return k;
-}
 
 /// The Gaussian derivative, scaled so that a unit ramp has derivative 1 (sigma 0: central differences).
 Kernel gaussianDerivative(double sigma) {
@@ -44,49 +35,10 @@ Kernel gaussianDerivative(double sigma) {
   return k;
 }
 
-/// out = in correlated with `kernel` along `axis` (0 x, 1 y, 2 z), clamp-to-edge; parallel over z slices.
+/// out = in correlated with `kernel` along `axis` (0 x, 1 y, 2 z), clamp-to-edge.
 void convolve(const std::vector<float>& in, std::vector<float>& out, const Dims& dims, int axis,
               const Kernel& kernel) {
-  const int r = int(kernel.size()) / 2;
-  const std::size_t row = std::size_t(dims.x), slice = row * std::size_t(dims.y);
-  tbb::parallel_for(tbb::blocked_range<int>(0, dims.z), [&](const tbb::blocked_range<int>& ks) {
-    for (int k = ks.begin(); k < ks.end(); ++k) {
-      float* o = out.data() + std::size_t(k) * slice;
-      if (axis == 2) {
-        std::fill(o, o + slice, 0.f);
-        for (int t = -r; t <= r; ++t) {
-          const float w = kernel[std::size_t(t + r)];
-          const float* s = in.data() + std::size_t(std::clamp(k + t, 0, dims.z - 1)) * slice;
-          for (std::size_t v = 0; v < slice; ++v) o[v] += w * s[v];
-        }
-        continue;
-      }
-      const float* s = in.data() + std::size_t(k) * slice;
-      for (int j = 0; j < dims.y; ++j) {
-        float* orow = o + std::size_t(j) * row;
-        if (axis == 1) {
-          std::fill(orow, orow + row, 0.f);
-          for (int t = -r; t <= r; ++t) {
-            const float w = kernel[std::size_t(t + r)];
-            const float* srow = s + std::size_t(std::clamp(j + t, 0, dims.y - 1)) * row;
-            for (std::size_t i = 0; i < row; ++i) orow[i] += w * srow[i];
-          }
-          continue;
-        }
-        const float* srow = s + std::size_t(j) * row;
-        for (int i = 0; i < dims.x; ++i) {
-          float sum = 0;
-          if (i - r >= 0 && i + r < dims.x) {
-            for (int t = -r; t <= r; ++t) sum += kernel[std::size_t(t + r)] * srow[i + t];
-          } else {
-            for (int t = -r; t <= r; ++t)
-              sum += kernel[std::size_t(t + r)] * srow[std::clamp(i + t, 0, dims.x - 1)];
-          }
-          orow[i] = sum;
-        }
-      }
-    }
-  });
+  correlateAlong(in.data(), out.data(), dims, 1, axis, kernel);
 }
 
 template <typename Body>
@@ -114,7 +66,8 @@ OrientationAgreement orientationAgreement(
     return result;
 
   const std::size_t n = dims.count(), slice = std::size_t(dims.x) * std::size_t(dims.y);
-  const Kernel smooth = gaussian(options.gradientSigma), derive = gaussianDerivative(options.gradientSigma);
+  const Kernel smooth = gaussianKernel(options.gradientSigma),
+               derive = gaussianDerivative(options.gradientSigma);
   std::vector<float> f(n), t1(n), t2(n);
   std::array<std::vector<float>, 3> g{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
   // Structure tensor components xx, xy, xz, yy, yz, zz, summed over the channels.
@@ -145,7 +98,7 @@ OrientationAgreement orientationAgreement(
       }
     });
   }
-  const Kernel window = gaussian(options.tensorSigma);
+  const Kernel window = gaussianKernel(options.tensorSigma);
   if (window.size() > 1)
     for (auto& component : tensor) {
       convolve(component, t1, dims, 0, window);

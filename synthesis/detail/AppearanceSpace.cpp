@@ -8,6 +8,7 @@
 
 #include "common/Error.h"
 #include "common/Random.h"
+#include "common/gaussianFilter.h"
 #include "synthesis/detail/InvertedFileIndex.h"
 #include "synthesis/detail/KdTree.h"
 #include "synthesis/detail/Pca.h"
@@ -15,39 +16,18 @@
 namespace solidtex::synthesis {
 namespace {
 
-// Separable Gaussian along one axis of a C-channel volume, clamped at the edges.
-DenseVolume blurAlong(const DenseVolume& in, int axis, const std::vector<float>& kernel) {
-  DenseVolume out{in.dims, in.channels, std::vector<float>(in.values.size())};
-  const int reach = int(kernel.size() / 2);
-  const std::array<int, 3> n{in.dims.x, in.dims.y, in.dims.z};
-  tbb::parallel_for(0, in.dims.z, [&](int k) {
-    for (int j = 0; j < in.dims.y; ++j)
-      for (int i = 0; i < in.dims.x; ++i) {
-        float* o = out.at(i, j, k);
-        for (int t = -reach; t <= reach; ++t) {
-          std::array<int, 3> c{i, j, k};
-          c[std::size_t(axis)] = std::clamp(c[std::size_t(axis)] + t, 0, n[std::size_t(axis)] - 1);
-          const float* v = in.at(c[0], c[1], c[2]);
-          for (int ch = 0; ch < in.channels; ++ch) o[ch] += kernel[std::size_t(t + reach)] * v[ch];
-        }
-      }
-  });
-  return out;
-}
-
 // The Gaussian stack's level for a spacing: blurred over about half the spacing, so that samples
 // `spacing` apart see the structure at that scale rather than aliased detail.
 DenseVolume stackLevel(const DenseVolume& exemplar, int spacing) {
   if (spacing <= 1) return exemplar;
-  const double sigma = 0.5 * spacing;
-  const int reach = int(std::ceil(3 * sigma));
-  std::vector<float> kernel(std::size_t(2 * reach + 1));
-  double total = 0;
-  for (int t = -reach; t <= reach; ++t)
-    total += kernel[std::size_t(t + reach)] = float(std::exp(-t * t / (2 * sigma * sigma)));
-  for (float& w : kernel) w = float(w / total);
-  DenseVolume blurred = exemplar;
-  for (int axis = 0; axis < 3; ++axis) blurred = blurAlong(blurred, axis, kernel);
+  const std::vector<float> kernel = gaussianKernel(0.5 * spacing);
+  DenseVolume blurred = exemplar,
+              scratch{exemplar.dims, exemplar.channels, std::vector<float>(exemplar.values.size())};
+  for (int axis = 0; axis < 3; ++axis) {
+    correlateAlong(blurred.values.data(), scratch.values.data(), blurred.dims, blurred.channels, axis,
+                   kernel);
+    std::swap(blurred.values, scratch.values);
+  }
   return blurred;
 }
 

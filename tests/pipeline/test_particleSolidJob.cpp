@@ -10,7 +10,6 @@
 #include "common/Error.h"
 #include "common/ThreadLimit.h"
 #include "pipeline/compareJob.h"
-#include "pipeline/jobSupport.h"
 #include "pipeline/particleSolidJob.h"
 #include "tests/scratchPath.h"
 #include "validation/sectionStatistics.h"

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/jobSupport.h"
+#include "common/ProgressLine.h"
 
 namespace solidtex {
 namespace {

@@ -13,8 +13,6 @@ namespace {
 
 using test::Scene;
 
-constexpr PlacerKind kAllKinds[] = {PlacerKind::Discrete, PlacerKind::Brute, PlacerKind::Edt,
-                                    PlacerKind::Delaunay};
 const Dims kDims{24, 28, 32};
 
 // What each kind promises against the exact spaciousness (capped at maxRadius).
@@ -153,7 +151,7 @@ TEST_P(FieldTest, MatchesTheExactSpaciousnessAroundATorus) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllKinds, FieldTest, testing::ValuesIn(kAllKinds),
+INSTANTIATE_TEST_SUITE_P(AllKinds, FieldTest, testing::ValuesIn(placerKinds()),
                          [](const testing::TestParamInfo<PlacerKind>& info) {
                            return placerName(info.param);
                          });
@@ -221,7 +219,8 @@ TEST(ExactSpaciousness, MatchesBruteForceDistances) {
 }
 
 TEST(SpaciousnessField, ParsesPlacerNames) {
-  for (const PlacerKind kind : kAllKinds) EXPECT_EQ(parsePlacerKind(placerName(kind)), kind);
+  for (const PlacerKind kind : placerKinds()) EXPECT_EQ(parsePlacerKind(placerName(kind)), kind);
+  EXPECT_EQ(placerNames(), "discrete, brute, edt or delaunay");
   EXPECT_THROW(parsePlacerKind("voronoi"), InputError);
 }
 

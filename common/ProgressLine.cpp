@@ -1,4 +1,4 @@
-#include "pipeline/jobSupport.h"
+#include "common/ProgressLine.h"
 
 #include <unistd.h>
 
@@ -6,30 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "common/Error.h"
-#include "common/writeFileBytes.h"
-
 namespace solidtex {
-
-void writeJsonFile(const std::string& path, const nlohmann::json& json) {
-  const std::string text = json.dump(2) + '\n';
-  writeFileBytes(path, text.data(), text.size());
-}
-
-void addReport(OutputFiles& outputs, const std::optional<std::string>& report) {
-  if (report) outputs.addFile("--report", *report, {".json"});
-}
-
-void addVolumeOutputs(OutputFiles& outputs, const std::string& vdb, const std::optional<std::string>& report,
-                      const std::optional<std::string>& preview) {
-  outputs.addFile("-o", vdb, {".vdb"});
-  addReport(outputs, report);
-  if (preview) outputs.addFolder("--preview", *preview);
-}
-
-void writeReport(OutputFiles& outputs, const std::optional<std::string>& report, const nlohmann::json& json) {
-  if (report) outputs.write(*report, [&](const std::string& path) { writeJsonFile(path, json); });
-}
 
 std::string progressText(const std::string& step, double fraction, double secondsLeft) {
   if (!(fraction >= 0)) return step;  // unknown, or NaN
@@ -52,16 +29,6 @@ std::string progressText(const std::string& step, double fraction, double second
     text += left;
   }
   return text;
-}
-
-void warnOfDroppedRegions(const ExemplarStats& stats, ProgressLine* progress) {
-  if (stats.areaShareBelowMinArea <= 0.5) return;
-  if (progress) progress->done();
-  std::fprintf(stderr,
-               "solidtex: warning: %s: %d regions, %.0f%% of the area that stands out, are smaller than the "
-               "minimum area of %g pixels and were dropped (see --min-area)\n",
-               stats.name.c_str(), stats.regionsBelowMinArea, 100 * stats.areaShareBelowMinArea,
-               stats.minArea);
 }
 
 void ProgressLine::update(const std::string& step, double fraction) {
