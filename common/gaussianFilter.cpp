@@ -53,7 +53,8 @@ void correlateAlong(const float* in, float* out, const Dims& dims, int channels,
           for (std::size_t ch = 0; ch < c; ++ch) {
             float sum = 0;
             for (int t = -r; t <= r; ++t)
-              sum += kernel[std::size_t(t + r)] * srow[std::size_t(std::clamp(i + t, 0, dims.x - 1)) * c + ch];
+              sum +=
+                  kernel[std::size_t(t + r)] * srow[std::size_t(std::clamp(i + t, 0, dims.x - 1)) * c + ch];
             orow[std::size_t(i) * c + ch] = sum;
           }
       }

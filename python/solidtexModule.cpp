@@ -173,6 +173,13 @@ py::object toPython(const nlohmann::json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
 }
 
+/// The seed keyword: a non-negative int, 1 when not given.
+std::uint64_t seedOf(Keywords& keywords) {
+  const long long seed = keywords.integer("seed").value_or(1);
+  if (seed < 0) throw py::value_error("seed must not be negative");
+  return std::uint64_t(seed);
+}
+
 SegmentationOptions segmentationOptions(Keywords& keywords) {
   SegmentationOptions options;
   options.maskPath = keywords.path("mask");
@@ -199,7 +206,7 @@ ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
   options.particles.views = int(keywords.integer("views").value_or(options.particles.views));
   options.particles.shapes = int(keywords.integer("shapes").value_or(options.particles.shapes));
   options.smoothing = keywords.number("smoothing");
-  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  options.seed = seedOf(keywords);
   return options;
 }
 
@@ -312,7 +319,7 @@ py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywor
   options.k = int(keywords.integer("k").value_or(options.k));
   options.iterations = int(keywords.integer("iterations").value_or(options.iterations));
   options.pcaDims = int(keywords.integer("pca_dims").value_or(options.pcaDims));
-  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  options.seed = seedOf(keywords);
   options.threads = int(keywords.integer("threads").value_or(0));
   const std::optional<std::string> control = keywords.path("control");
   const bool measure = keywords.flag("measure").value_or(true),
@@ -358,7 +365,7 @@ py::dict volumeSynthesis(const DenseVolume& exemplar, const std::string& name, K
   options.pcaDims = int(keywords.integer("pca_dims").value_or(options.pcaDims));
   options.corrections = int(keywords.integer("corrections").value_or(options.corrections));
   options.periodic = keywords.flag("periodic").value_or(false);
-  options.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  options.seed = seedOf(keywords);
   options.threads = int(keywords.integer("threads").value_or(0));
   const std::optional<std::string> fieldName = keywords.text("field");
   const bool measure = keywords.flag("measure").value_or(true),
@@ -477,7 +484,7 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   job.voxelsPerPixel = keywords.number("scale").value_or(0);
   job.sections.offsetsPerAxis = int(keywords.integer("axis_planes").value_or(job.sections.offsetsPerAxis));
   job.sections.obliquePlanes = int(keywords.integer("oblique_planes").value_or(job.sections.obliquePlanes));
-  job.sections.seed = job.quality.seed = std::uint64_t(keywords.integer("seed").value_or(1));
+  job.sections.seed = job.quality.seed = seedOf(keywords);
   job.truth = keywords.path("truth");
   const py::object referenceArgument =
       kwargs.contains("reference") ? py::object(kwargs["reference"]) : py::none();

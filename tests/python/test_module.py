@@ -152,7 +152,8 @@ class KeywordsTest(unittest.TestCase):
 
     def test_a_value_out_of_range_is_a_value_error_naming_the_keyword_not_a_flag(self):
         for keywords, name in [({"views": 7}, "views"), ({"scale": 100.0}, "scale"),
-                               ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer")]:
+                               ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer"),
+                               ({"seed": -1}, "seed")]:
             with self.assertRaises(ValueError) as error:
                 solidtex.particles(COINS, size=16, **keywords)
             self.assertIn(name, str(error.exception))
