@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "common/Random.h"
-#include "voxel/vdbIO.h"
+#include "io/vdbIO.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

@@ -5,8 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "io/writeVolumeExports.h"
 #include "segmentation/analyzeExemplar.h"
-#include "voxel/writeVolumeExports.h"
 
 namespace solidtex::cli {
 

@@ -144,7 +144,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
           dims->empty() ? Dims{o.size, o.size, o.size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
       if (!region->empty())
         v.synthesis.region =
-            VoxelBox{{(*region)[0], (*region)[1], (*region)[2]}, {(*region)[3], (*region)[4], (*region)[5]}};
+            Box{{(*region)[0], (*region)[1], (*region)[2]}, {(*region)[3], (*region)[4], (*region)[5]}};
       if (command->get_option("--levels")->count() > 0) v.synthesis.levels = o.levels;
       if (command->get_option("--k")->count() > 0) v.synthesis.k = o.k;
       if (command->get_option("--pca-dims")->count() > 0) v.synthesis.pcaDims = o.pcaDims;

@@ -19,7 +19,7 @@ using ExactMesh = CGAL::Surface_mesh<EK::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 ExactMesh exactMeshOf(const HullMesh& mesh) {
-  const auto soup = detail::polygonSoupOf<EK::Point_3>(mesh);
+  const auto soup = mesh::detail::polygonSoupOf<EK::Point_3>(mesh);
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
     throw std::runtime_error("clipToBox: the mesh is not a manifold surface");
   ExactMesh exact;

@@ -15,7 +15,7 @@ namespace solidtex {
 MeshTopology meshTopology(const HullMesh& mesh) {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   namespace PMP = CGAL::Polygon_mesh_processing;
-  const auto soup = detail::polygonSoupOf<Point>(mesh);
+  const auto soup = mesh::detail::polygonSoupOf<Point>(mesh);
   MeshTopology topology;
   // A soup is a polygon mesh when its edges are manifold and consistently wound and its vertices
   // are manifold.

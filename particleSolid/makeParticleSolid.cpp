@@ -222,7 +222,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
   PlacementOptions placement;
   placement.dims = placed;
   placement.periodic = periodic;
-  if (margin > 0) placement.counted = VolumeBox{{margin, margin, margin}, dims};
+  if (margin > 0) placement.counted = Box::at({margin, margin, margin}, dims);
   placement.voxelsPerPixel = solid_.voxelsPerPixel;
   placement.seed = options_.seed;
   placement.arrangement = options_.arrangement;

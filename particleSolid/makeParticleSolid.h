@@ -11,15 +11,15 @@
 #include "common/Grid.h"
 #include "common/PhaseTimer.h"
 #include "common/Progress.h"
+#include "common/SolidVolume.h"
 #include "mesh/ParticleMesh.h"
+#include "particleSolid/synthesizeMatrix.h"
 #include "particles/ParticleFactory.h"
 #include "particles/fitHullSmoothing.h"
 #include "placement/SpaciousnessField.h"
 #include "placement/placeLargestFirst.h"
 #include "placement/sectionSizing.h"
 #include "segmentation/analyzeExemplar.h"
-#include "synthesis/synthesizeMatrix.h"
-#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 

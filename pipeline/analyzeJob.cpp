@@ -1,9 +1,9 @@
 #include "pipeline/analyzeJob.h"
 
+#include "io/imageIO.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/warnOfDroppedRegions.h"
 #include "segmentation/drawLabels.h"
-#include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
 
 namespace solidtex {

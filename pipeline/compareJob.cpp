@@ -8,14 +8,14 @@
 
 #include "common/Error.h"
 #include "common/distributionDistance.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
-#include "segmentation/imageIO.h"
 #include "validation/compareSections.h"
 #include "validation/particleVolumes.h"
 #include "voxel/slice.h"
-#include "voxel/vdbIO.h"
 
 namespace solidtex {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/SolidVolume.h"
 #include "segmentation/analyzeExemplar.h"
 #include "validation/continuousQuality.h"
 #include "validation/sectionStatistics.h"
-#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 

@@ -6,13 +6,13 @@
 #include <tbb/parallel_reduce.h>
 
 #include "common/memoryBudget.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "mesh/meshTopology.h"
 #include "mesh/writeParticleMeshes.h"
 #include "particleSolid/particleSolidReport.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/warnOfDroppedRegions.h"
-#include "segmentation/imageIO.h"
-#include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {

@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/writeVolumeExports.h"
 #include "particleSolid/makeParticleSolid.h"
-#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 

@@ -3,12 +3,12 @@
 #include "common/Error.h"
 #include "common/ProgressLine.h"
 #include "common/memoryBudget.h"
+#include "io/imageIO.h"
 #include "particleSolid/makeParticleSolid.h"
 #include "particles/ParticleFactory.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/spaciousnessPlot.h"
 #include "placement/placeLargestFirst.h"
-#include "segmentation/imageIO.h"
 #include "validation/evaluateSpaciousnessFields.h"
 
 namespace solidtex {

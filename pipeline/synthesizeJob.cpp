@@ -8,11 +8,11 @@
 #include "common/Error.h"
 #include "common/ProgressLine.h"
 #include "common/memoryBudget.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
-#include "segmentation/imageIO.h"
 #include "synthesis/synthesizeSolid.h"
-#include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {

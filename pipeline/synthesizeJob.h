@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/writeVolumeExports.h"
 #include "synthesis/synthesizeSolid.h"
 #include "validation/continuousQuality.h"
-#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 

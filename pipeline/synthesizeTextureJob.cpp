@@ -6,9 +6,9 @@
 #include "common/Error.h"
 #include "common/ProgressLine.h"
 #include "common/memoryBudget.h"
+#include "io/imageIO.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
-#include "segmentation/imageIO.h"
 
 namespace solidtex {
 namespace {

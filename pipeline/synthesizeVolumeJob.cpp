@@ -12,8 +12,9 @@
 #include "common/ThreadLimit.h"
 #include "common/memoryBudget.h"
 #include "common/srgb.h"
+#include "io/frameFieldIO.h"
+#include "io/vdbIO.h"
 #include "pipeline/jobOutputs.h"
-#include "voxel/vdbIO.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {
@@ -181,7 +182,7 @@ nlohmann::json volumeSynthesisReport(const VolumeSynthesisResult& result,
                            {"periodic", options.periodic},
                            {"seed", options.seed}};
   if (options.region) {
-    const VoxelBox& box = result.box;
+    const Box& box = result.box;
     report["region"] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
   }
   report["level_reports"] = levelReports(result.statistics);
@@ -217,7 +218,7 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
 
   nlohmann::json report = volumeSynthesisReport(
       result, options, exemplar, fs::path(job.exemplar).filename().string(), job.field.value_or("none"));
-  const VoxelBox& box = result.box;
+  const Box& box = result.box;
   if (job.measure) {
     progress.update("measuring the volume against the exemplar");
     report["quality"] = volumeQualityReport(result.values, exemplar, job.quality);

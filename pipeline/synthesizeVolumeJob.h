@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/writeVolumeExports.h"
 #include "synthesis/synthesizeFromVolume.h"
 #include "validation/volumeQuality.h"
-#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 

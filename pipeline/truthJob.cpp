@@ -4,9 +4,9 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "pipeline/jobOutputs.h"
-#include "segmentation/imageIO.h"
-#include "voxel/vdbIO.h"
 
 namespace solidtex {
 namespace {

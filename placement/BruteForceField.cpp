@@ -6,14 +6,15 @@
 #include <tbb/parallel_for.h>
 
 #include "placement/detail/BucketField.h"
-#include "placement/detail/fieldFactories.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 // Squared distance from (x,y,z) to the box: a lower bound of the distance to anything inside it.
-std::int64_t squaredGapToBox(int x, int y, int z, const VoxelBox& box) {
-  const auto gap = [](int v, int lo, int hi) { return std::int64_t(v < lo ? lo - v : v > hi ? v - hi : 0); };
+std::int64_t squaredGapToBox(int x, int y, int z, const Box& box) {
+  const auto gap = [](int v, int lo, int hi) {
+    return std::int64_t(v < lo ? lo - v : v >= hi ? v - hi + 1 : 0);
+  };
   const std::int64_t gx = gap(x, box.lo.x, box.hi.x), gy = gap(y, box.lo.y, box.hi.y),
                      gz = gap(z, box.lo.z, box.hi.z);
   return gx * gx + gy * gy + gz * gz;
@@ -40,25 +41,24 @@ private:
   // of a periodic volume's particle) to their distance from them.
   void lowerTowards(std::vector<Voxel> boundary) {
     boundary_ = std::move(boundary);
-    const VoxelBox box = boundingBox(boundary_);
+    const Box box = boundingBox(boundary_);
     const int reach = int(std::ceil(std::sqrt(double(this->capKey()))));
     const Dims& d = this->dims_;
-    const VoxelBox region{
+    const Box region{
         {std::max(box.lo.x - reach, 0), std::max(box.lo.y - reach, 0), std::max(box.lo.z - reach, 0)},
-        {std::min(box.hi.x + reach, d.x - 1), std::min(box.hi.y + reach, d.y - 1),
-         std::min(box.hi.z + reach, d.z - 1)}};
+        {std::min(box.hi.x + reach, d.x), std::min(box.hi.y + reach, d.y), std::min(box.hi.z + reach, d.z)}};
     // Slices are evaluated in parallel; their changes are applied in slice order for determinism.
-    std::vector<std::vector<std::pair<VoxelIndex, Key>>> changes(std::size_t(region.hi.z - region.lo.z + 1));
-    tbb::parallel_for(region.lo.z, region.hi.z + 1,
+    std::vector<std::vector<std::pair<VoxelIndex, Key>>> changes(std::size_t(region.hi.z - region.lo.z));
+    tbb::parallel_for(region.lo.z, region.hi.z,
                       [&](int z) { evaluateSlice(z, region, box, changes[std::size_t(z - region.lo.z)]); });
     for (const auto& slice : changes)
       for (const auto& [v, key] : slice) this->queue_.lower(v, key);
   }
 
-  void evaluateSlice(int z, const VoxelBox& region, const VoxelBox& box,
+  void evaluateSlice(int z, const Box& region, const Box& box,
                      std::vector<std::pair<VoxelIndex, Key>>& changes) const {
-    for (int y = region.lo.y; y <= region.hi.y; ++y)
-      for (int x = region.lo.x; x <= region.hi.x; ++x) {
+    for (int y = region.lo.y; y < region.hi.y; ++y)
+      for (int x = region.lo.x; x < region.hi.x; ++x) {
         const VoxelIndex v = VoxelIndex(this->dims_.index(x, y, z));
         const std::int64_t old = this->queue_.key(v);
         if (squaredGapToBox(x, y, z, box) >= old) continue;  // also skips occupied voxels
@@ -78,4 +78,4 @@ std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadiu
                                                periodic);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -31,12 +31,12 @@
 #include <CGAL/Triangulation_vertex_base_3.h>
 #include <CGAL/spatial_sort.h>
 
+#include "placement/SpaciousnessField.h"
 #include "placement/detail/VoxelBits.h"
-#include "placement/detail/fieldFactories.h"
 #include "placement/detail/uniformSample.h"
 #include "placement/detail/voxelSets.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -260,7 +260,7 @@ private:
     }
     const Voxel w = dims_.wrap(v);
     const Point p = jitteredPointOf(w);
-    for (const Voxel& s : periodicShifts(dims_, {w, w}, int(imageReach_)))
+    for (const Voxel& s : periodicShifts(dims_, Box::at(w, {1, 1, 1}), int(imageReach_)))
       points_.emplace_back(p.x() + s.x, p.y() + s.y, p.z() + s.z);
   }
 
@@ -415,4 +415,4 @@ std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius,
   return std::make_unique<DelaunayField>(dims, maxRadius, periodic);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -4,9 +4,8 @@
 #include <cmath>
 
 #include "placement/detail/BucketField.h"
-#include "placement/detail/fieldFactories.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 // Key k stands for k steps; the last key stands for maxRadius. A step count is the Chebyshev
@@ -87,4 +86,4 @@ std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float max
                                                     periodic);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

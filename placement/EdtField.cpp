@@ -12,9 +12,8 @@
 #include <tbb/parallel_for.h>
 
 #include "placement/detail/BucketField.h"
-#include "placement/detail/fieldFactories.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 constexpr int kBlock = 8;
@@ -74,19 +73,19 @@ void transformLine(std::uint32_t* f, int n, std::ptrdiff_t stride, LowerEnvelope
 
 double squared(double v) { return v * v; }
 
-// Squared gap between inclusive intervals [a0,a1] and [b0,b1].
-double squaredGap(int a0, int a1, int b0, int b1) { return squared(std::max({0, b0 - a1, a0 - b1})); }
+// Squared gap between the voxels of the half-open intervals [a0,a1) and [b0,b1).
+double squaredGap(int a0, int a1, int b0, int b1) { return squared(std::max({0, b0 - a1 + 1, a0 - b1 + 1})); }
 
 // Where the particle is: its box, and a ball around the box centre holding all its voxels.
 struct ParticleBounds {
-  VoxelBox box;
+  Box box;
   double cx, cy, cz, radius;
 };
 
 ParticleBounds boundsOf(const std::vector<Voxel>& voxels) {
-  const VoxelBox box = boundingBox(voxels);
-  ParticleBounds b{box, (box.lo.x + box.hi.x) / 2.0, (box.lo.y + box.hi.y) / 2.0, (box.lo.z + box.hi.z) / 2.0,
-                   0};
+  const Box box = boundingBox(voxels);
+  ParticleBounds b{box, (box.lo.x + box.hi.x - 1) / 2.0, (box.lo.y + box.hi.y - 1) / 2.0,
+                   (box.lo.z + box.hi.z - 1) / 2.0, 0};
   for (const Voxel& v : voxels)
     b.radius = std::max(b.radius, squared(v.x - b.cx) + squared(v.y - b.cy) + squared(v.z - b.cz));
   b.radius = std::sqrt(b.radius);
@@ -95,11 +94,14 @@ ParticleBounds boundsOf(const std::vector<Voxel>& voxels) {
 
 // A lower bound of the squared distance from any voxel of `block` to any voxel of the particle: the
 // larger of the gap between the boxes and the gap between the block and the particle's ball.
-double squaredGapBound(const VoxelBox& block, const ParticleBounds& p) {
+double squaredGapBound(const Box& block, const ParticleBounds& p) {
   const double boxGap = squaredGap(block.lo.x, block.hi.x, p.box.lo.x, p.box.hi.x) +
                         squaredGap(block.lo.y, block.hi.y, p.box.lo.y, p.box.hi.y) +
                         squaredGap(block.lo.z, block.hi.z, p.box.lo.z, p.box.hi.z);
-  const auto axis = [](double c, int lo, int hi) { return c < lo ? lo - c : c > hi ? c - hi : 0.0; };
+  const auto axis = [](double c, int lo, int hi) {
+    const int last = hi - 1;
+    return c < lo ? lo - c : c > last ? c - last : 0.0;
+  };
   const double toBlock =
       std::sqrt(squared(axis(p.cx, block.lo.x, block.hi.x)) + squared(axis(p.cy, block.lo.y, block.hi.y)) +
                 squared(axis(p.cz, block.lo.z, block.hi.z)));
@@ -151,20 +153,20 @@ private:
     std::size_t first, count;
   };
 
-  VoxelBox blockBox(int bx, int by, int bz) const {
+  Box blockBox(int bx, int by, int bz) const {
     const Dims& d = this->dims_;
     return {{bx * kBlock, by * kBlock, bz * kBlock},
-            {std::min(bx * kBlock + kBlock, d.x) - 1, std::min(by * kBlock + kBlock, d.y) - 1,
-             std::min(bz * kBlock + kBlock, d.z) - 1}};
+            {std::min(bx * kBlock + kBlock, d.x), std::min(by * kBlock + kBlock, d.y),
+             std::min(bz * kBlock + kBlock, d.z)}};
   }
 
   Key scanBlock(std::size_t b) const {
     const Voxel c = blocks_.voxel(b);
-    const VoxelBox box = blockBox(c.x, c.y, c.z);
+    const Box box = blockBox(c.x, c.y, c.z);
     Key most = 0;
-    for (int z = box.lo.z; z <= box.hi.z; ++z)
-      for (int y = box.lo.y; y <= box.hi.y; ++y)
-        for (int x = box.lo.x; x <= box.hi.x; ++x)
+    for (int z = box.lo.z; z < box.hi.z; ++z)
+      for (int y = box.lo.y; y < box.hi.y; ++y)
+        for (int x = box.lo.x; x < box.hi.x; ++x)
           most = std::max(most, this->queue_.key(VoxelIndex(this->dims_.index(x, y, z))));
     return most;
   }
@@ -174,13 +176,14 @@ private:
   void findAffectedBlocks(const ParticleBounds& particle) {
     affected_.clear();
     columns_.clear();
-    const VoxelBox& p = particle.box;
+    const Box& p = particle.box;
     const Dims& d = this->dims_;
     const int reach = int(std::ceil(std::sqrt(double(this->capKey()))));
     const Voxel lo{std::max(p.lo.x - reach, 0) / kBlock, std::max(p.lo.y - reach, 0) / kBlock,
                    std::max(p.lo.z - reach, 0) / kBlock};
-    const Voxel hi{std::min(p.hi.x + reach, d.x - 1) / kBlock, std::min(p.hi.y + reach, d.y - 1) / kBlock,
-                   std::min(p.hi.z + reach, d.z - 1) / kBlock};
+    const Voxel hi{std::min(p.hi.x - 1 + reach, d.x - 1) / kBlock,
+                   std::min(p.hi.y - 1 + reach, d.y - 1) / kBlock,
+                   std::min(p.hi.z - 1 + reach, d.z - 1) / kBlock};
     sub_ = p;
     for (int by = lo.y; by <= hi.y; ++by)
       for (int bx = lo.x; bx <= hi.x; ++bx) {
@@ -192,7 +195,7 @@ private:
         }
         if (affected_.size() == first) continue;
         columns_.push_back({bx, by, first, affected_.size() - first});
-        const VoxelBox box = blockBox(bx, by, 0);
+        const Box box = blockBox(bx, by, 0);
         sub_.lo = {std::min(sub_.lo.x, box.lo.x), std::min(sub_.lo.y, box.lo.y), p.lo.z};
         sub_.hi = {std::max(sub_.hi.x, box.hi.x), std::max(sub_.hi.y, box.hi.y), p.hi.z};
       }
@@ -201,11 +204,11 @@ private:
 
   // slab_ over sub_'s x-y extent and the particle's z range: squared distance to the particle's
   // voxels within each z plane (the EDT's passes along x and y).
-  void transformSlab(const std::vector<Voxel>& voxels, const VoxelBox& p) {
-    slabDims_ = {sub_.hi.x - sub_.lo.x + 1, sub_.hi.y - sub_.lo.y + 1, p.hi.z - p.lo.z + 1};
+  void transformSlab(const std::vector<Voxel>& voxels, const Box& p) {
+    slabDims_ = {sub_.hi.x - sub_.lo.x, sub_.hi.y - sub_.lo.y, p.hi.z - p.lo.z};
     slab_.assign(slabDims_.count(), kFar);
     for (const Voxel& v : voxels) slab_[slabDims_.index(v.x - sub_.lo.x, v.y - sub_.lo.y, v.z - p.lo.z)] = 0;
-    const int sx = slabDims_.x, sy = slabDims_.y, py = p.hi.y - p.lo.y + 1, y0 = p.lo.y - sub_.lo.y;
+    const int sx = slabDims_.x, sy = slabDims_.y, py = p.hi.y - p.lo.y, y0 = p.lo.y - sub_.lo.y;
     const std::ptrdiff_t plane = std::ptrdiff_t(sx) * sy;
     // Along x, only rows that hold particle voxels; along y, every line of the slab.
     transformLines(py * slabDims_.z, sx, 1,
@@ -226,16 +229,16 @@ private:
   // the old values: changes_[i] gets block affected_[i]'s drops in index order and its bound is
   // renewed. Columns run in parallel; the changes are applied afterwards in block order, so the
   // result does not depend on the thread count.
-  void evaluateColumns(const VoxelBox& p) {
+  void evaluateColumns(const Box& p) {
     const std::ptrdiff_t plane = std::ptrdiff_t(slabDims_.x) * slabDims_.y;
     tbb::parallel_for(std::size_t(0), columns_.size(), [&](std::size_t c) {
       const BlockColumn& column = columns_[c];
       for (std::size_t i = column.first; i < column.first + column.count; ++i) changes_[i].clear();
       std::vector<Key> most(column.count);  // the new bound of each affected block of the column
       LowerEnvelope envelope(slabDims_.z);
-      const VoxelBox cells = blockBox(column.bx, column.by, 0);
-      for (int y = cells.lo.y; y <= cells.hi.y; ++y)
-        for (int x = cells.lo.x; x <= cells.hi.x; ++x) {
+      const Box cells = blockBox(column.bx, column.by, 0);
+      for (int y = cells.lo.y; y < cells.hi.y; ++y)
+        for (int x = cells.lo.x; x < cells.hi.x; ++x) {
           envelope.build(slab_.data() + (y - sub_.lo.y) * slabDims_.x + (x - sub_.lo.x), slabDims_.z, plane,
                          p.lo.z);
           for (std::size_t i = column.first; i < column.first + column.count; ++i)
@@ -268,7 +271,7 @@ private:
   std::vector<std::size_t> affected_;
   std::vector<BlockColumn> columns_;
   std::vector<std::vector<std::pair<VoxelIndex, Key>>> changes_;
-  VoxelBox sub_;
+  Box sub_;
   Dims slabDims_;
   std::vector<std::uint32_t> slab_;
 };
@@ -280,4 +283,4 @@ std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius, bool
                                         periodic);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -3,10 +3,17 @@
 #include <iterator>
 
 #include "common/Error.h"
-#include "placement/detail/fieldFactories.h"
 #include "placement/detail/voxelSets.h"
 
 namespace solidtex {
+
+// Each field's factory is defined in its own translation unit (placement/<Name>Field.cpp).
+namespace placement::detail {
+std::unique_ptr<SpaciousnessField> makeDiscreteVoronoiField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeBruteForceField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeEdtField(Dims dims, float maxRadius, bool periodic);
+std::unique_ptr<SpaciousnessField> makeDelaunayField(Dims dims, float maxRadius, bool periodic);
+}  // namespace placement::detail
 
 namespace {
 
@@ -19,10 +26,10 @@ struct PlacerRow {
 };
 
 const PlacerRow kPlacers[] = {
-    {PlacerKind::Discrete, "discrete", detail::makeDiscreteVoronoiField},
-    {PlacerKind::Brute, "brute", detail::makeBruteForceField},
-    {PlacerKind::Edt, "edt", detail::makeEdtField},
-    {PlacerKind::Delaunay, "delaunay", detail::makeDelaunayField},
+    {PlacerKind::Discrete, "discrete", placement::detail::makeDiscreteVoronoiField},
+    {PlacerKind::Brute, "brute", placement::detail::makeBruteForceField},
+    {PlacerKind::Edt, "edt", placement::detail::makeEdtField},
+    {PlacerKind::Delaunay, "delaunay", placement::detail::makeDelaunayField},
 };
 
 const PlacerRow& rowOf(PlacerKind kind) {
@@ -60,7 +67,7 @@ std::string placerNames() {
 
 std::unique_ptr<SpaciousnessField> makeSpaciousnessField(PlacerKind kind, Dims dims, float maxRadius,
                                                          bool periodic) {
-  detail::checkFieldArguments(dims, maxRadius);
+  placement::detail::checkFieldArguments(dims, maxRadius);
   return rowOf(kind).make(dims, maxRadius, periodic);
 }
 

@@ -44,8 +44,8 @@ VoxelCloud boundaryOf(const Dims& dims, const std::vector<std::int32_t>& ids, bo
           return freeAt({v.x + s[0], v.y + s[1], v.z + s[2]});
         }))
       continue;
-    for (const Voxel& s :
-         periodic ? detail::periodicShifts(dims, {v, v}, reach) : std::vector<Voxel>{Voxel{}})
+    for (const Voxel& s : periodic ? placement::detail::periodicShifts(dims, Box::at(v, {1, 1, 1}), reach)
+                                   : std::vector<Voxel>{Voxel{}})
       cloud.points.push_back({float(v.x + s.x), float(v.y + s.y), float(v.z + s.z)});
   }
   return cloud;

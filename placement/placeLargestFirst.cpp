@@ -44,7 +44,7 @@ struct WeightedPair {
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
-using detail::ShapeKey;
+using placement::detail::ShapeKey;
 
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
@@ -105,9 +105,9 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options,
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
   if (options.counted) {
-    const VolumeBox& c = *options.counted;
-    if (c.dims.count() == 0 || !options.dims.contains(c.lo.x, c.lo.y, c.lo.z) ||
-        !options.dims.contains(c.lo.x + c.dims.x - 1, c.lo.y + c.dims.y - 1, c.lo.z + c.dims.z - 1))
+    const Box& c = *options.counted;
+    if (c.empty() || !options.dims.contains(c.lo.x, c.lo.y, c.lo.z) ||
+        !options.dims.contains(c.hi.x - 1, c.hi.y - 1, c.hi.z - 1))
       throw std::invalid_argument("placement: the counted box is not inside the volume");
   }
   if (!(options.dims == field.dims()))
@@ -178,7 +178,7 @@ struct Phase {
   std::array<std::vector<int>, kBins> failures;  ///< per pair, tries that found no spot in a row
   bool roundUp = false;  ///< the last pass over the bins placed nothing: quotas round up
   double passShare;      ///< of each bin's quota that a pass places
-  detail::ShapeSupply shapes;
+  placement::detail::ShapeSupply shapes;
 
 private:
   // Expected particle volumes per bin start from a few pilot shapes of the bin and follow the
@@ -199,7 +199,8 @@ private:
         ++n;
         const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
         const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
-        const auto voxels = double(detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
+        const auto voxels =
+            double(placement::detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
         sum += voxels;
         sumOfSquares += voxels * voxels;
         const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
@@ -221,8 +222,8 @@ public:
         options_(options),
         rng_(deriveSeed(options.seed, kPlacementStream)),
         pairRng_(deriveSeed(options.seed, kPairStream)),
-        counted_(options.counted.value_or(VolumeBox{{0, 0, 0}, options.dims})),
-        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims.count()))),
+        counted_(options.counted.value_or(Box::of(options.dims))),
+        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims().count()))),
         occupied_(options.dims.count()),
         tried_(options.dims.count()) {
     result_.dims = options.dims;
@@ -285,7 +286,7 @@ private:
     }
   }
 
-  double fraction() const { return double(placedVoxels_) / double(counted_.dims.count()); }
+  double fraction() const { return double(placedVoxels_) / double(counted_.dims().count()); }
   bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
   bool limitReached() const {
     return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
@@ -362,13 +363,13 @@ private:
   }
 
   bool tryPair(const WeightedPair& pair, int bin) {
-    const detail::ReadyShape shape = phase_->shapes.take({bin, pair.width, pair.height});
+    const placement::detail::ReadyShape shape = phase_->shapes.take({bin, pair.width, pair.height});
     return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
   }
 
   // Uniform draws random spots that may hold the shape; best fit (paper 3.7), and uniform once its
   // random spots are spent, tries the smallest such spots first. Each is checked voxel by voxel.
-  bool place(const detail::FitShape& shape, const ParticleSize& size, int bin) {
+  bool place(const placement::detail::FitShape& shape, const ParticleSize& size, int bin) {
     fieldUpdate_.wait();
     const float cap = field_.maxRadius();
     triedSpots_.clear();
@@ -390,23 +391,24 @@ private:
   }
 
   // The first of the spots, each valued at least `radius` by the field, where the shape fits.
-  std::optional<Voxel> firstFit(const detail::FitShape& shape, const std::vector<Voxel>& spots,
+  std::optional<Voxel> firstFit(const placement::detail::FitShape& shape, const std::vector<Voxel>& spots,
                                 float radius) {
     for (const Voxel& spot : spots) {
       if (tried_.testAndSet(options_.dims.index(spot))) continue;
       triedSpots_.push_back(spot);
       // The field's spots hold at least `radius` less the slack: a free bound, where at() may be a costly
       // query.
-      if (detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_, options_.dims,
-                         options_.periodic))
+      if (placement::detail::fitsAt(shape, spot, std::max(0.0f, radius - field_.slack()), occupied_,
+                                    options_.dims, options_.periodic))
         return spot;
     }
     return std::nullopt;
   }
 
-  void commit(const detail::FitShape& shape, const Voxel& spot, const ParticleSize& size, int bin) {
+  void commit(const placement::detail::FitShape& shape, const Voxel& spot, const ParticleSize& size,
+              int bin) {
     const int id = int(result_.particles.size()) + 1;
-    const Voxel origin = detail::originAt(shape, spot);
+    const Voxel origin = placement::detail::originAt(shape, spot);
     volumeVoxels_.clear();
     std::size_t counted = 0;
     for (const Voxel& v : shape.voxels) {
@@ -450,16 +452,18 @@ private:
   const ParticleFactory& factory_;
   SpaciousnessField& field_;
   const PlacementOptions& options_;
-  Rng rng_;            ///< best-fit draws
-  Rng pairRng_;        ///< the order pairs are tried in
-  VolumeBox counted_;  ///< where the fraction and the particles per bin are counted
+  Rng rng_;      ///< best-fit draws
+  Rng pairRng_;  ///< the order pairs are tried in
+  Box counted_;  ///< where the fraction and the particles per bin are counted
   double targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;  ///< inside counted_
   std::array<double, kBins>
       countedPerBin_{};  ///< particles placed in every phase, each by its share inside counted_
   PlacementResult result_;
-  detail::VoxelBits occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
-  detail::VoxelBits tried_;     ///< spots the current shape was tried at (their words are cleared after)
+  placement::detail::VoxelBits
+      occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
+  placement::detail::VoxelBits
+      tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;
   std::vector<std::size_t> untried_;  ///< attempt()'s pairs not tried yet
   std::optional<Phase> phase_;

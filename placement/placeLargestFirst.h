@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/Box.h"
 #include "common/Grid.h"
 #include "particles/ParticleFactory.h"
 #include "placement/SpaciousnessField.h"
@@ -23,18 +24,11 @@ enum class Arrangement {
 Arrangement parseArrangement(const std::string& name);
 const char* arrangementName(Arrangement arrangement);
 
-/// A box of voxels: `dims` voxels from `lo`.
-struct VolumeBox {
-  Voxel lo;
-  Dims dims;
-  bool contains(const Voxel& v) const { return dims.contains(v.x - lo.x, v.y - lo.y, v.z - lo.z); }
-};
-
 struct PlacementOptions {
   Dims dims{128, 128, 128};
   /// Where the area fraction is reached and counted, when the volume is a margin around the solid
   /// that will be cut out of it (particles then run through the solid's faces); empty: everywhere.
-  std::optional<VolumeBox> counted;
+  std::optional<Box> counted;
   /// The volume is a 3D torus: particles cross a face and continue on the opposite one (the field
   /// must be periodic too; no counted box).
   bool periodic = false;

@@ -21,6 +21,9 @@
 #include "common/ThreadLimit.h"
 #include "common/interruption.h"
 #include "common/memoryBudget.h"
+#include "io/frameFieldIO.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "particleSolid/makeParticleSolid.h"
 #include "particleSolid/particleSolidReport.h"
 #include "pipeline/compareJob.h"
@@ -28,14 +31,13 @@
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
 #include "python/keywords.h"
+#include "segmentation/analyzeExemplar.h"
 #include "segmentation/drawLabels.h"
-#include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
 #include "synthesis/FrameField.h"
 #include "synthesis/synthesizeFromVolume.h"
 #include "synthesis/synthesizeSolid.h"
 #include "validation/continuousQuality.h"
-#include "voxel/vdbIO.h"
 
 namespace py = pybind11;
 
@@ -123,8 +125,8 @@ void runParsing(Parse&& parse) {
 }
 
 /// A photo given as a path (read as the command line reads it) or as a numpy array (H, W), (H, W, 3)
-/// or (H, W, 4), uint8 or float in [0, 1] (sRGB). `name` labels it in reports.
-cv::Mat photoOf(const py::handle& photo, std::string& name) {
+/// or (H, W, 4), uint8 or float in [0, 1] (sRGB). `name` labels it in reports; `what` names it in errors.
+cv::Mat photoOf(const py::handle& photo, std::string& name, const std::string& what = "photo") {
   if (const std::optional<std::string> path = asPath(photo)) {
     name = *path;
     cv::Mat image;
@@ -132,15 +134,16 @@ cv::Mat photoOf(const py::handle& photo, std::string& name) {
     return image;
   }
   if (!py::isinstance<py::array>(photo))
-    throw py::type_error("photo must be a path (str or os.PathLike) or a numpy array, not " +
+    throw py::type_error(what + " must be a path (str or os.PathLike) or a numpy array, not " +
                          std::string(py::str(py::type::handle_of(photo).attr("__name__"))));
   name = "array";
   const auto array = py::reinterpret_borrow<py::array>(photo);
   if (array.ndim() != 2 && array.ndim() != 3)
-    throw py::value_error("photo must have the shape (height, width) or (height, width, channels)");
+    throw py::value_error(what + " must have the shape (height, width) or (height, width, channels)");
   const int channels = array.ndim() == 2 ? 1 : int(array.shape(2));
   const bool bytes = array.dtype().is(py::dtype::of<std::uint8_t>());
-  if (!bytes && array.dtype().kind() != 'f') throw py::value_error("photo must be uint8, or float in [0, 1]");
+  if (!bytes && array.dtype().kind() != 'f')
+    throw py::value_error(what + " must be uint8, or float in [0, 1]");
   const py::array pixels =
       bytes ? py::array(py::array_t<std::uint8_t, py::array::c_style>::ensure(array))
             : py::array(py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array));
@@ -180,9 +183,33 @@ std::uint64_t seedOf(Keywords& keywords) {
   return std::uint64_t(seed);
 }
 
+/// The mask keyword: a path (read as --mask reads it), a bool array (True = particle) or an image
+/// array as photos are given (white = particle).
+void readMask(Keywords& keywords, SegmentationOptions& options) {
+  const py::object mask = keywords.take("mask");
+  if (mask.is_none()) return;
+  if (const std::optional<std::string> path = asPath(mask)) {
+    options.maskPath = path;
+    return;
+  }
+  if (!py::isinstance<py::array>(mask)) keywords.wrongType("mask", "a path or a numpy array", mask);
+  const auto array = py::reinterpret_borrow<py::array>(mask);
+  if (array.dtype().kind() == 'b') {
+    if (array.ndim() != 2) throw py::value_error("mask must have the shape (height, width)");
+    const auto values = py::array_t<bool, py::array::c_style>::ensure(array);
+    cv::Mat(int(array.shape(0)), int(array.shape(1)), CV_8U, const_cast<bool*>(values.data()))
+        .copyTo(options.mask);
+    options.mask = options.mask != 0;
+    return;
+  }
+  std::string name;
+  const cv::Mat image = photoOf(mask, name, "mask");
+  options.mask = maskFromImage(image);
+}
+
 SegmentationOptions segmentationOptions(Keywords& keywords) {
   SegmentationOptions options;
-  options.maskPath = keywords.path("mask");
+  readMask(keywords, options);
   options.invert = keywords.flag("invert").value_or(false);
   options.split = keywords.flag("split").value_or(true);
   options.minArea = keywords.number("min_area").value_or(-1);
@@ -356,7 +383,7 @@ py::dict volumeSynthesis(const DenseVolume& exemplar, const std::string& name, K
   options.dims = {size, size, size};
   if (const auto dims = keywords.integers("dims", 3)) options.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
   if (const auto box = keywords.integers("region", 6))
-    options.region = VoxelBox{{(*box)[0], (*box)[1], (*box)[2]}, {(*box)[3], (*box)[4], (*box)[5]}};
+    options.region = Box{{(*box)[0], (*box)[1], (*box)[2]}, {(*box)[3], (*box)[4], (*box)[5]}};
   options.levels = int(keywords.integer("levels").value_or(options.levels));
   options.jitter = keywords.number("jitter").value_or(options.jitter);
   options.k = int(keywords.integer("k").value_or(options.k));
@@ -516,7 +543,8 @@ PYBIND11_MODULE(solidtex, m) {
   m.def("analyze", &analyze, py::arg("photo"),
         "Segments a photo of particles (a path, or a numpy array: (H, W), (H, W, 3) or (H, W, 4), uint8 "
         "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict. "
-        "Keywords: mask (a path), invert, split, min_area; labels and report write the outlined photo "
+        "Keywords: mask (a path, a bool array or an image array, white = particle), invert, split, min_area; "
+        "labels and report write the outlined photo "
         "(PNG) and the statistics (JSON).");
   m.def("particles", &particles, py::arg("photo"),
         "Makes a particle solid from a photo (a path or a numpy array, as analyze takes): a dict of numpy "

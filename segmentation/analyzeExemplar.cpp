@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "io/imageIO.h"
 #include "segmentation/detail/color.h"
 #include "segmentation/detail/fillHoles.h"
 #include "segmentation/detail/loadMask.h"
@@ -18,7 +19,6 @@
 #include "segmentation/detail/separateBackground.h"
 #include "segmentation/detail/splitParticles.h"
 #include "segmentation/detail/summarize.h"
-#include "segmentation/imageIO.h"
 
 namespace solidtex {
 namespace {
@@ -71,9 +71,21 @@ double defaultMinArea(const cv::Size& size, const std::vector<int>& areasAtNoise
   return std::clamp(kTypicalShare * typicalArea(areasAtNoise), kNoiseArea, byPhoto);
 }
 
+bool hasUserMask(const SegmentationOptions& options) { return !options.mask.empty() || options.maskPath; }
+
+cv::Mat userMask(const SegmentationOptions& options, const cv::Size& photoSize) {
+  if (options.mask.empty()) return segmentation::detail::loadMask(*options.maskPath, photoSize);
+  if (options.mask.type() != CV_8UC1) throw InputError("mask must be CV_8U (one 8-bit channel)");
+  if (options.mask.size() != photoSize)
+    throw InputError("mask is " + std::to_string(options.mask.cols) + "x" +
+                     std::to_string(options.mask.rows) + " but the photo is " +
+                     std::to_string(photoSize.width) + "x" + std::to_string(photoSize.height));
+  return options.mask != 0;
+}
+
 cv::Mat particleMask(const cv::Mat& linear, const SegmentationOptions& options, double minArea) {
-  if (!options.maskPath) return detail::separateBackground(linear, minArea, options.invert);
-  cv::Mat mask = detail::loadMask(*options.maskPath, linear.size());
+  if (!hasUserMask(options)) return segmentation::detail::separateBackground(linear, minArea, options.invert);
+  cv::Mat mask = userMask(options, linear.size());
   return options.invert ? cv::Mat(mask == 0) : mask;
 }
 
@@ -89,9 +101,10 @@ std::string noParticlesMessage(const ExemplarStats& stats, const SegmentationOpt
                                   ? "; " + std::to_string(stats.regionsBelowMinArea) +
                                         " smaller regions were dropped (see --min-area)"
                                   : "";
-  if (options.maskPath)
-    return stats.name + ": no particles found: the mask " + *options.maskPath +
-           " has no white region of at least " + minimum + dropped;
+  if (hasUserMask(options))
+    return stats.name + ": no particles found: the mask " +
+           (options.mask.empty() ? *options.maskPath + " " : "") + "has no white region of at least " +
+           minimum + dropped;
   if (stats.regionsBelowMinArea > 0)
     return stats.name + ": no particles found: the " + std::to_string(stats.regionsBelowMinArea) +
            " regions that stand out from the background are all smaller than " + minimum +
@@ -105,9 +118,9 @@ std::string noParticlesMessage(const ExemplarStats& stats, const SegmentationOpt
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options) {
   checkPhoto(photoSrgb, name);
-  const cv::Mat linear = detail::srgbToLinear(photoSrgb);
+  const cv::Mat linear = segmentation::detail::srgbToLinear(photoSrgb);
   const cv::Mat labelsAtNoise =
-      detail::labelParticles(particleMask(linear, options, kNoiseArea), options.split);
+      segmentation::detail::labelParticles(particleMask(linear, options, kNoiseArea), options.split);
   const std::vector<int> areasAtNoise = particleAreas(labelsAtNoise);
 
   ExemplarStats stats;
@@ -124,18 +137,25 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
     }
   }
   stats.areaShareBelowMinArea = standingOut > 0 ? dropped / standingOut : 0;
-  cv::Mat labels = stats.minArea == kNoiseArea || options.maskPath
-                       ? labelsAtNoise
-                       : detail::labelParticles(particleMask(linear, options, stats.minArea), options.split);
-  detail::fillEnclosedHoles(labels);
-  stats.particles = detail::measureParticles(labels, linear, stats.minArea);
+  cv::Mat labels =
+      stats.minArea == kNoiseArea || hasUserMask(options)
+          ? labelsAtNoise
+          : segmentation::detail::labelParticles(particleMask(linear, options, stats.minArea), options.split);
+  segmentation::detail::fillEnclosedHoles(labels);
+  stats.particles = segmentation::detail::measureParticles(labels, linear, stats.minArea);
   if (stats.particles.empty()) throw InputError(noParticlesMessage(stats, options));
-  detail::measureBackground(stats, linear);
+  segmentation::detail::measureBackground(stats, linear);
   std::vector<const Particle2D*> counted;
   for (std::size_t i : statisticalParticles(stats.particles)) counted.push_back(&stats.particles[i]);
-  stats.histogram = detail::buildAreaHistogram(counted);
-  stats.sizePairs = detail::buildSizePairs(counted);
+  stats.histogram = segmentation::detail::buildAreaHistogram(counted);
+  stats.sizePairs = segmentation::detail::buildSizePairs(counted);
   return stats;
+}
+
+cv::Mat maskFromImage(const cv::Mat& imageSrgb) {
+  cv::Mat grey;
+  cv::cvtColor(imageSrgb, grey, cv::COLOR_RGB2GRAY);
+  return grey > 0.5f;
 }
 
 ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions& options) {

@@ -10,7 +10,8 @@ namespace solidtex {
 
 /// How the photo is split into particles and background.
 struct SegmentationOptions {
-  std::optional<std::string> maskPath;  ///< white = particle; replaces the automatic separation
+  cv::Mat mask;  ///< CV_8U of the photo's size, non-zero = particle; replaces the automatic separation
+  std::optional<std::string> maskPath;  ///< read with maskFromImage when `mask` is empty
   bool invert = false;  ///< swap what the automatic separation (or the mask) calls particle and background
   bool split = true;    ///< split touching particles (distance transform + watershed)
   double minArea = -1;  ///< pixels; < 0: max(8, the photo's area / 10000), or for a photo whose
@@ -27,6 +28,10 @@ struct SegmentationOptions {
 /// Throws InputError when no particle is found.
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options);
+
+/// A mask drawn as an image (CV_32FC3 sRGB, e.g. from loadPhoto) as CV_8U: 255 where its grey is over
+/// one half (white = particle), 0 elsewhere.
+cv::Mat maskFromImage(const cv::Mat& imageSrgb);
 
 /// loadPhoto + analyzeExemplar.
 ExemplarStats analyzeExemplar(const std::string& path, const SegmentationOptions& options);

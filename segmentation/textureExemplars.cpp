@@ -20,7 +20,7 @@ cv::Mat matrixExemplar(const ExemplarStats& stats, const TextureExemplarOptions&
   const cv::Mat linear =
       stats.backgroundResidual +
       cv::Scalar(stats.backgroundColor[0], stats.backgroundColor[1], stats.backgroundColor[2]);
-  return detail::exemplarWindow(linear, known, options.maxSide, options.minShare);
+  return segmentation::detail::exemplarWindow(linear, known, options.maxSide, options.minShare);
 }
 
 cv::Mat particleExemplar(const ExemplarStats& stats, const TextureExemplarOptions& options) {
@@ -32,7 +32,7 @@ cv::Mat particleExemplar(const ExemplarStats& stats, const TextureExemplarOption
     cv::Mat(splitResidual(particle).grain + cv::Scalar::all(0.5)).copyTo(linear(particle.box), inside);
     known(particle.box).setTo(255, inside);
   }
-  return detail::exemplarWindow(linear, known, options.maxSide, options.minShare);
+  return segmentation::detail::exemplarWindow(linear, known, options.maxSide, options.minShare);
 }
 
 }  // namespace solidtex

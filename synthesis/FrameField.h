@@ -2,20 +2,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
-#include "common/Grid.h"
+#include "common/FrameField.h"
 
 namespace solidtex {
-
-/// Per output voxel, where each exemplar axis points in the output: column a of axes[v] is the
-/// output-space direction of exemplar axis a (x, y, z). Identity everywhere = plain (isometric) synthesis.
-struct FrameField {
-  Dims dims;
-  std::vector<Eigen::Matrix3f> axes;  ///< dims.count(), x fastest (Dims::index)
-
-  const Eigen::Matrix3f& at(int i, int j, int k) const { return axes[dims.index(i, j, k)]; }
-};
 
 /// Built-in fields over `dims`, all rotations (orthonormal, right-handed), the same on every z slice
 /// except slant3d, which is constant. The centre is c = ((dims.x - 1) / 2, (dims.y - 1) / 2) in voxel
@@ -35,18 +24,5 @@ FrameField builtinFrameField(const std::string& name, const Dims& dims);
 
 /// Names of the built-in fields, for --help and errors.
 const std::vector<std::string>& builtinFrameFieldNames();
-
-/// Reads a user field from a .vdb with Vec3SGrids "axis_x", "axis_y", "axis_z" (each voxel's three
-/// axes, the columns), sampled at every voxel of `dims` (voxel (i,j,k) = index coordinate (i,j,k));
-/// inactive voxels take the grid's background. Each frame is made a rotation: its axes are normalised,
-/// a left-handed frame has its exemplar z axis negated, and the nearest rotation is taken (polar
-/// decomposition). A degenerate frame (an axis shorter than 1e-6, or axes parallel or coplanar: smallest
-/// singular value of the normalised axes below 1e-3) throws InputError naming the voxel (the first in
-/// index order). Missing or mistyped grids, or an unreadable file: InputError, one line.
-FrameField readFrameField(const std::string& path, const Dims& dims);
-
-/// Writes a field in the same format, every voxel active, voxel size 1 (for tests, and for users to
-/// start from a built-in one). Throws InputError when the path cannot be written.
-void writeFrameField(const std::string& path, const FrameField& field);
 
 }  // namespace solidtex

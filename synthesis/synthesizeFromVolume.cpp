@@ -19,8 +19,8 @@
 namespace solidtex {
 namespace {
 
-using synthesis::AppearanceLevel;
-using synthesis::ExemplarDomain;
+using synthesis::detail::AppearanceLevel;
+using synthesis::detail::ExemplarDomain;
 using Coord = std::array<int, 3>;  // a domain voxel
 using Frame = Eigen::Matrix3f;     // columns: the output directions of the exemplar axes
 
@@ -75,7 +75,7 @@ struct CoordinateGrid {
 struct LevelPlan {
   int spacing = 1;
   Dims dims;                    // the whole level
-  VoxelBox window;              // what is synthesised; on a periodic level it may run past the faces
+  Box window;                   // what is synthesised; on a periodic level it may run past the faces
   std::array<bool, 3> wraps{};  // axes whose window is the whole periodic level
   bool periodic = false;
   int appearance = -1;  // index into the appearance levels; -1 = not corrected
@@ -119,10 +119,10 @@ void widen(int needLo, int needHi, int margin, int side, bool periodic, int& lo,
   }
 }
 
-std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBox& region, int corrected) {
+std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const Box& region, int corrected) {
   const int top = pyramidDepth(o);
   std::vector<LevelPlan> plan(std::size_t(top) + 1);
-  VoxelBox need = region;
+  Box need = region;
   for (int l = top; l >= 0; --l) {
     LevelPlan& level = plan[std::size_t(l)];
     level.spacing = 1 << (top - l);
@@ -132,7 +132,7 @@ std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const VoxelBo
     const int finestFirst = top - l;
     level.appearance = finestFirst < corrected ? finestFirst : -1;
     const int margin = level.appearance >= 0 ? correctionReach(o.corrections) : 0;
-    VoxelBox& w = level.window;
+    Box& w = level.window;
     widen(need.lo.x, need.hi.x, margin, level.dims.x, o.periodic, w.lo.x, w.hi.x, level.wraps[0]);
     widen(need.lo.y, need.hi.y, margin, level.dims.y, o.periodic, w.lo.y, w.hi.y, level.wraps[1]);
     widen(need.lo.z, need.hi.z, margin, level.dims.z, o.periodic, w.lo.z, w.hi.z, level.wraps[2]);
@@ -391,7 +391,7 @@ void checkOptions(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) 
   if (o.field && !(o.field->dims == o.dims))
     throw std::logic_error("synthesizeFromVolume: field dims differ from the output's");
   if (o.region) {
-    const VoxelBox& r = *o.region;
+    const Box& r = *o.region;
     if (!(r.lo.x >= 0 && r.lo.y >= 0 && r.lo.z >= 0 && r.hi.x <= o.dims.x && r.hi.y <= o.dims.y &&
           r.hi.z <= o.dims.z && r.lo.x < r.hi.x && r.lo.y < r.hi.y && r.lo.z < r.hi.z))
       throw OptionError(
@@ -430,7 +430,7 @@ int correctableLevels(const ExemplarDomain& domain, int window) {
 
 void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const DenseVolume& exemplar,
              VolumeSynthesisResult& result) {
-  const VoxelBox& box = result.box;
+  const Box& box = result.box;
   const Dims dims = box.dims();
   result.values = {dims, exemplar.channels,
                    std::vector<float>(dims.count() * std::size_t(exemplar.channels))};
@@ -452,7 +452,7 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
   const auto start = std::chrono::steady_clock::now();
   checkOptions(exemplar, o);
   const ThreadLimit threadLimit(o.threads);
-  const ExemplarDomain domain = synthesis::exemplarDomain(exemplar.dims, o.window);
+  const ExemplarDomain domain = synthesis::detail::exemplarDomain(exemplar.dims, o.window);
   const int allowed = correctableLevels(domain, o.window);
   if (o.levels > allowed)
     throw OptionError("--levels " + std::to_string(o.levels) + " is more than this exemplar allows (" +
@@ -462,11 +462,11 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
   checkPeriodicSize(o, corrected);
 
   VolumeSynthesisResult result;
-  result.box = o.region.value_or(VoxelBox{{0, 0, 0}, {o.dims.x, o.dims.y, o.dims.z}});
+  result.box = o.region.value_or(Box::of(o.dims));
   result.statistics.domain = domain.size;
   const std::vector<LevelPlan> plan = planLevels(o, result.box, corrected);
 
-  synthesis::AppearanceOptions appearanceOptions{o.window, o.pcaDims, o.k, o.exclusion};
+  synthesis::detail::AppearanceOptions appearanceOptions{o.window, o.pcaDims, o.k, o.exclusion};
   std::vector<AppearanceLevel> appearance(static_cast<std::size_t>(corrected));
   std::unique_ptr<CoordinateGrid> grid;
   for (std::size_t l = 0; l < plan.size(); ++l) {
@@ -484,7 +484,7 @@ VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const Vo
                    pyramidFraction(int(plan.size()), int(l), -1, 1, levelVoxels));
       const auto analysisStart = std::chrono::steady_clock::now();
       AppearanceLevel& a = appearance[std::size_t(level.appearance)];
-      a = synthesis::buildAppearanceLevel(exemplar, domain, level.spacing, appearanceOptions);
+      a = synthesis::detail::buildAppearanceLevel(exemplar, domain, level.spacing, appearanceOptions);
       stats.appearanceDims = a.dims;
       stats.keptVariance = a.keptVariance;
       stats.similarityFallbackShare = a.excludedFallbackShare;

@@ -6,22 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "common/Box.h"
 #include "common/DenseVolume.h"
 #include "common/Progress.h"
 #include "synthesis/FrameField.h"
 
 namespace solidtex {
 
-/// A box of output voxels [lo, hi) per axis.
-struct VoxelBox {
-  Voxel lo, hi;
-  Dims dims() const { return {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}; }
-};
-
 /// Options of synthesizeFromVolume; defaults follow Su 2008 (chapter 5) and `solidtex synthesize`.
 struct VolumeSynthesisOptions {
-  Dims dims{64, 64, 64};           ///< output voxels per axis
-  std::optional<VoxelBox> region;  ///< only this box of the output, identical to it in the full volume
+  Dims dims{64, 64, 64};      ///< output voxels per axis
+  std::optional<Box> region;  ///< only this box of the output, identical to it in the full volume
   /// Levels corrected against the exemplar, finest first; 0 = every level whose appearance window
   /// (window x spacing) fits in half the exemplar. Coarser levels are upsampled and jittered only.
   int levels = 0;
@@ -64,7 +59,7 @@ struct VolumeSynthesisStatistics {
 
 /// The synthesised box and the exemplar coordinate each voxel copies.
 struct VolumeSynthesisResult {
-  VoxelBox box;                              ///< the region, or the whole output
+  Box box;                                   ///< the region, or the whole output
   DenseVolume values;                        ///< the exemplar's channels, box.dims()
   std::vector<std::array<float, 3>> source;  ///< exemplar voxel copied, per voxel
   VolumeSynthesisStatistics statistics;

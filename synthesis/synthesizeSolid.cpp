@@ -25,7 +25,7 @@
 
 namespace solidtex {
 
-using namespace synthesis;
+using namespace synthesis::detail;
 
 std::string searchName(NeighborhoodSearch search) {
   switch (search) {

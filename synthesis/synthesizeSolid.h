@@ -5,8 +5,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "common/SolidVolume.h"
 #include "synthesis/SynthesisOptions.h"
-#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 

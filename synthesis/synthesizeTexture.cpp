@@ -22,7 +22,7 @@
 
 namespace solidtex {
 
-using namespace synthesis;
+using namespace synthesis::detail;
 
 std::string textureMethodName(TextureMethod method) {
   return method == TextureMethod::Kwatra ? "kwatra" : "skeletal";

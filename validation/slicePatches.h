@@ -5,7 +5,7 @@
 #include <opencv2/core.hpp>
 
 #include "common/Grid.h"
-#include "voxel/SolidVolume.h"
+#include "common/SolidVolume.h"
 
 namespace solidtex {
 

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/SolidVolume.h"
 #include "segmentation/ExemplarStats.h"
-#include "voxel/SolidVolume.h"
 
 namespace solidtex {
 

@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
-#include "segmentation/imageIO.h"
+#include "io/imageIO.h"
 #include "voxel/slice.h"
 
 namespace solidtex {

@@ -5,7 +5,7 @@
 
 #include "particles/HullMesh.h"
 
-namespace solidtex::detail {
+namespace solidtex::mesh::detail {
 
 template <typename Point>
 struct PolygonSoup {
@@ -24,4 +24,4 @@ PolygonSoup<Point> polygonSoupOf(const HullMesh& mesh) {
   return soup;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::mesh::detail

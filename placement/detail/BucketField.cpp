@@ -1,6 +1,6 @@
 #include "placement/detail/BucketField.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 std::vector<float> squaredDistanceValues(float maxRadius) {
   const auto capKey = std::uint64_t(std::ceil(double(maxRadius) * double(maxRadius)));
@@ -10,4 +10,4 @@ std::vector<float> squaredDistanceValues(float maxRadius) {
   return values;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -13,7 +13,7 @@
 #include "placement/detail/BucketQueue.h"
 #include "placement/detail/voxelSets.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// Stores an integer key per voxel; values_[key] is the spaciousness it stands for (non-decreasing
 /// in the key, values_[0] = 0 for occupied voxels, the last key is the cap).
@@ -112,4 +112,4 @@ std::unique_ptr<SpaciousnessField> makeWithNarrowestKey(std::uint64_t maxKey, Ar
 /// Values for squared-distance keys: sqrt(key), the last key (ceil(maxRadius^2)) standing for maxRadius.
 std::vector<float> squaredDistanceValues(float maxRadius);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -9,7 +9,7 @@
 #include "placement/detail/uniformSample.h"
 #include "placement/detail/voxelSets.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// Every voxel has a key (0 = occupied, never queued) and sits in the bucket of its key.
 /// Keys only ever decrease, so instead of doubly linked lists (8 bytes a voxel) a lowered voxel is
@@ -73,13 +73,11 @@ public:
   /// Hands up to maxCount voxels with keys >= minKey, drawn uniformly with replacement, to `take`.
   template <class Take>
   void sampleUniformly(std::size_t minKey, std::size_t maxCount, Rng& rng, Take&& take) const {
-    solidtex::detail::sampleUniformly(buckets_, std::max<std::size_t>(minKey, 1), maxCount, rng,
-                                      [&](VoxelIndex v) {
-                                        if (keys_[v] == 0 || keys_[v] < minKey)
-                                          return false;  // stale: lowered since
-                                        take(v);
-                                        return true;
-                                      });
+    detail::sampleUniformly(buckets_, std::max<std::size_t>(minKey, 1), maxCount, rng, [&](VoxelIndex v) {
+      if (keys_[v] == 0 || keys_[v] < minKey) return false;  // stale: lowered since
+      take(v);
+      return true;
+    });
   }
 
   /// Heap bytes held (keys and buckets), for memory reports.
@@ -119,4 +117,4 @@ private:
   std::size_t stale_ = 0;             ///< bucket entries whose voxel has a lower key now
 };
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

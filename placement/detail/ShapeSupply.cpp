@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
@@ -59,4 +59,4 @@ ReadyShape ShapeSupply::take(const ShapeKey& key) {
   return shape;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

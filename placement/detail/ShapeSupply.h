@@ -12,7 +12,7 @@
 #include "particles/ParticleFactory.h"
 #include "placement/detail/shapeFit.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// A particle made for a photo particle's (width, height) box, ready to be tried at spots.
 struct ReadyShape {
@@ -60,4 +60,4 @@ private:
   tbb::task_group aheadTask_;
 };
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// A set of voxel indices as a bit array: 1/32 of an int32 grid, so it stays in cache.
 class VoxelBits {
@@ -28,4 +28,4 @@ private:
   std::vector<std::uint64_t> words_;
 };
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -6,7 +6,7 @@
 
 #include "placement/detail/voxelSets.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 Voxel nearestShapeVoxel(const VoxelShape& shape, const Voxel& centre) {
@@ -87,4 +87,4 @@ bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const 
   return true;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -7,7 +7,7 @@
 #include "particles/VoxelShape.h"
 #include "placement/detail/VoxelBits.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// A shape ready to be tried at spots: the spot takes its anchor voxel.
 struct FitShape {
@@ -35,4 +35,4 @@ inline Voxel originAt(const FitShape& shape, const Voxel& spot) {
 bool fitsAt(const FitShape& shape, const Voxel& spot, float spaciousness, const VoxelBits& occupied,
             Dims dims, bool periodic);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

@@ -6,7 +6,7 @@
 
 #include "common/Random.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// Draws entries uniformly (with replacement) from buckets [first, buckets.size()) and hands each to
 /// `take`, which returns false for a stale entry (skipped: uniform over the live ones). Stops after
@@ -27,4 +27,4 @@ void sampleUniformly(const std::vector<Bucket>& buckets, std::size_t first, std:
   }
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

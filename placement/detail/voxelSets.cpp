@@ -8,7 +8,7 @@
 
 #include "common/Error.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 void checkFieldArguments(Dims dims, float maxRadius) {
   if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0)
@@ -32,21 +32,22 @@ void checkInside(Dims dims, const std::vector<Voxel>& voxels) {
   for (const Voxel& v : voxels) checkInside(dims, v);
 }
 
-VoxelBox boundingBox(const std::vector<Voxel>& voxels) {
-  VoxelBox box{voxels.front(), voxels.front()};
+Box boundingBox(const std::vector<Voxel>& voxels) {
+  Box box{voxels.front(), voxels.front()};
   for (const Voxel& v : voxels) {
     box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
     box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
   }
+  box.hi = {box.hi.x + 1, box.hi.y + 1, box.hi.z + 1};
   return box;
 }
 
-std::vector<Voxel> periodicShifts(Dims dims, const VoxelBox& box, int reach) {
-  // Per axis, the multiples s of n with [lo - reach, hi + reach] + s meeting [0, n).
+std::vector<Voxel> periodicShifts(Dims dims, const Box& box, int reach) {
+  // Per axis, the multiples s of n with [lo - reach, hi + reach) + s meeting [0, n).
   const auto along = [reach](int lo, int hi, int n) {
     std::vector<int> shifts;
-    for (int s = -((hi + reach) / n + 1) * n; lo - reach + s < n; s += n)
-      if (hi + reach + s >= 0) shifts.push_back(s);
+    for (int s = -((hi - 1 + reach) / n + 1) * n; lo - reach + s < n; s += n)
+      if (hi - 1 + reach + s >= 0) shifts.push_back(s);
     return shifts;
   };
   std::vector<Voxel> out;
@@ -66,8 +67,8 @@ std::vector<Voxel> shifted(const std::vector<Voxel>& voxels, const Voxel& shift)
 
 std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
   if (voxels.empty()) return {};
-  const VoxelBox box = boundingBox(voxels);
-  const Dims local{box.hi.x - box.lo.x + 1, box.hi.y - box.lo.y + 1, box.hi.z - box.lo.z + 1};
+  const Box box = boundingBox(voxels);
+  const Dims local = box.dims();
   std::vector<std::uint8_t> inside(local.count());
   for (const Voxel& v : voxels) inside[local.index(v.x - box.lo.x, v.y - box.lo.y, v.z - box.lo.z)] = 1;
   const auto in = [&](int i, int j, int k) {
@@ -83,4 +84,4 @@ std::vector<Voxel> boundaryVoxels(const std::vector<Voxel>& voxels) {
   return out;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

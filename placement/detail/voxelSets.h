@@ -4,17 +4,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/Box.h"
 #include "common/Grid.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 
 /// Linear voxel index; fields accept volumes of fewer than 2^32 voxels.
 using VoxelIndex = std::uint32_t;
-
-/// Inclusive voxel box.
-struct VoxelBox {
-  Voxel lo, hi;
-};
 
 /// Throws InputError unless dims are positive and fit VoxelIndex, and maxRadius is positive and finite.
 void checkFieldArguments(Dims dims, float maxRadius);
@@ -24,12 +20,12 @@ void checkInside(Dims dims, const std::vector<Voxel>& voxels);
 void checkInside(Dims dims, const Voxel& v);
 
 /// Tight box of a non-empty voxel set.
-VoxelBox boundingBox(const std::vector<Voxel>& voxels);
+Box boundingBox(const std::vector<Voxel>& voxels);
 
 /// The shifts by whole volumes (a multiple of dims on each axis) that bring `box`, grown by `reach`
 /// on every side, to overlap the volume: where a set of voxels in a periodic volume has images
 /// that voxels of the volume can see within `reach`.
-std::vector<Voxel> periodicShifts(Dims dims, const VoxelBox& box, int reach);
+std::vector<Voxel> periodicShifts(Dims dims, const Box& box, int reach);
 
 /// The voxels moved by `shift`.
 std::vector<Voxel> shifted(const std::vector<Voxel>& voxels, const Voxel& shift);
@@ -54,4 +50,4 @@ inline std::int64_t squaredDistance(const Voxel& a, const Voxel& b) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

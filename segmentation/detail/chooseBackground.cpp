@@ -10,7 +10,7 @@
 #include "segmentation/detail/shape.h"
 #include "segmentation/detail/splitParticles.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr double kDecisionPixels = 512.0 * 512.0;
@@ -107,4 +107,4 @@ cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea) {
   return middle;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

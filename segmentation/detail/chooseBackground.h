@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // How much a class of pixels (CV_8U mask) looks like particles: it is cut into bodies the same way
 // particles are (distance transform + convexity), and the share of its pixels that lie in bodies
@@ -28,4 +28,4 @@ double solidShare(const cv::Mat& particles, double minArea);
 // (light and dark pebbles in grey mortar). Empty otherwise.
 cv::Mat middleLightnessClass(const cv::Mat& lightness, double minArea);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Whole-image versions of srgbToLinear / linearToSrgb for float images of any channel count.
 cv::Mat srgbToLinear(const cv::Mat& srgb);
@@ -11,4 +11,4 @@ cv::Mat linearToSrgb(const cv::Mat& linear);
 // but from linear values (no second gamma decode) and several times faster than its float path.
 cv::Mat linearToLab(const cv::Mat& linear);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

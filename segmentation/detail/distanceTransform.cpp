@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr float kFar = std::numeric_limits<float>::infinity();
@@ -90,4 +90,4 @@ cv::Mat euclideanDistance(const cv::Mat& mask) {
   return distance;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

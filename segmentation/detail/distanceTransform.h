@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Exact Euclidean distance (CV_32F) from every pixel of a CV_8U mask to the nearest zero pixel:
 // 0 on zero pixels; hypot(width, height), farther than any distance inside the image, everywhere
@@ -10,4 +10,4 @@ namespace solidtex::detail {
 // than 4096 pixels (2^24 = 4096^2), so pixels past x = 4096 get distances to the wrong column.
 cv::Mat euclideanDistance(const cv::Mat& mask);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -8,7 +8,7 @@
 
 #include "segmentation/detail/markerWatershed.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr float kReach = 3.0f * 1.4826f;  // 3 robust standard deviations (1.4826 MAD)
@@ -56,4 +56,4 @@ cv::Mat backgroundByEdges(const cv::Mat& distance, const cv::Mat& particleSeeds,
   return markerWatershed(markers, gradientMagnitude(distance)) == kBackground;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -3,7 +3,7 @@
 
 #include "segmentation/detail/otsu.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Splits pixels by their colour distance from the background (CV_32F) into background (255 in the
 // returned CV_8U mask) and particles. Pixels within the background's own spread of distances are
@@ -17,4 +17,4 @@ cv::Mat backgroundByEdges(const cv::Mat& distance, const OtsuSplit& split);
 // the background's colour, each side with a threshold of its own.
 cv::Mat backgroundByEdges(const cv::Mat& distance, const cv::Mat& particleSeeds, float threshold);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -10,7 +10,7 @@
 
 #include "segmentation/detail/color.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 cv::Point richestWindow(const cv::Mat& mask, int side, int step) {
@@ -125,4 +125,4 @@ cv::Mat exemplarWindow(const cv::Mat& linear, const cv::Mat& known, int side, do
   return fromLab8(filled);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // The side x side window of `linear` (CV_32FC3 linear RGB) with the most `known` pixels (CV_8U,
 // ties: the first in raster order on a grid of 4), its other pixels filled cell by cell, from the
@@ -14,4 +14,4 @@ namespace solidtex::detail {
 // so its fill varied between runs.
 cv::Mat exemplarWindow(const cv::Mat& linear, const cv::Mat& known, int side, double minShare);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -6,7 +6,7 @@
 
 #include "segmentation/detail/shape.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr int kNobody = 0, kSeveral = -1;
@@ -53,4 +53,4 @@ void fillEnclosedHoles(cv::Mat& labels) {
   }
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // A particle is what its outline encloses (paper 3.2: particles are contours): every background
 // hole of `labels` (CV_32S, 0 = background) that only one particle surrounds (a coin's dark
@@ -9,4 +9,4 @@ namespace solidtex::detail {
 // in by several particles (between packed grains) stay background.
 void fillEnclosedHoles(cv::Mat& labels);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr int kTerms = 6;               // 1, x, y, x^2, xy, y^2
@@ -87,4 +87,4 @@ cv::Mat flattenShading(const cv::Mat& lab, const cv::Mat& backgroundMask) {
   return flat;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Removes smooth shading (uneven lighting, vignetting) from a CV_32FC3 Lab image: fits a
 // quadratic surface in (x, y) to each channel over the background pixels (CV_8U mask) and
@@ -10,4 +10,4 @@ namespace solidtex::detail {
 // backgrounds are untouched.
 cv::Mat flattenShading(const cv::Mat& lab, const cv::Mat& backgroundMask);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

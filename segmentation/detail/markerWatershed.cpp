@@ -5,7 +5,7 @@
 #include <queue>
 #include <vector>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 struct Entry {
@@ -83,4 +83,4 @@ cv::Mat markerWatershed(const cv::Mat& markers, const cv::Mat& relief) {
   return labels;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -7,7 +7,7 @@
 
 #include "segmentation/detail/shape.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 std::vector<cv::Point> largestOuterContour(const cv::Mat& region) {
@@ -75,4 +75,4 @@ void measureBackground(ExemplarStats& stats, const cv::Mat& linear) {
   stats.areaFraction = 1.0 - double(backgroundPixels) / double(linear.total());
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

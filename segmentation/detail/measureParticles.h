@@ -5,7 +5,7 @@
 
 #include "segmentation/ExemplarStats.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Measures every labelled particle (CV_32S labels, 0 = background, holes already filled) of a
 // CV_32FC3 linear-RGB photo: outer contour, box, area, mean colour, mask and residual. Particles smaller than
@@ -16,4 +16,4 @@ std::vector<Particle2D> measureParticles(const cv::Mat& labels, const cv::Mat& l
 // particles. With no background pixel at all, the background colour is the photo's mean.
 void measureBackground(ExemplarStats& stats, const cv::Mat& linear);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

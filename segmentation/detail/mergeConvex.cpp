@@ -8,7 +8,7 @@
 
 #include "segmentation/detail/shape.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 struct Piece {
@@ -216,4 +216,4 @@ void mergeWhereMoreConvex(cv::Mat& labels) {
   relabelInRasterOrder(labels);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Undoes cuts that made particles less convex. Distance-transform peaks also appear inside one
 // particle whose mask has dents or holes (dark relief on a coin, the pale centre of a leopard
@@ -11,4 +11,4 @@ namespace solidtex::detail {
 // neck form a notched, less solid union and stay apart. Relabels 1..N in raster order.
 void mergeWhereMoreConvex(cv::Mat& labels);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

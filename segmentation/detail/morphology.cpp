@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 // Sets the pixels of the components of `selected` smaller than minArea to `value` in `mask`.
@@ -36,4 +36,4 @@ void fillSmallHoles(cv::Mat& mask, double minArea) {
   replaceSmall(mask == 0, mask, minArea, 4, 255);
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

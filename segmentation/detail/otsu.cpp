@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr int kBins = 512;
@@ -141,4 +141,4 @@ OtsuThreeClasses otsuThreeClasses(const cv::Mat& values, const cv::Mat& mask) {
   return best;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

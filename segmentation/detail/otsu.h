@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 struct OtsuSplit {
   float threshold = 0;      // values > threshold form the upper class
@@ -23,4 +23,4 @@ struct OtsuThreeClasses {
 // Otsu's criterion with two thresholds (three classes), on the same robust histogram as otsu().
 OtsuThreeClasses otsuThreeClasses(const cv::Mat& values, const cv::Mat& mask = {});
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -15,7 +15,7 @@
 #include "segmentation/detail/morphology.h"
 #include "segmentation/detail/otsu.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 constexpr double kMinSpread = 1.0;     // Lab units: a feature flatter than this carries no classes
@@ -237,4 +237,4 @@ cv::Mat separateBackground(const cv::Mat& linear, double minArea, bool invert) {
   return chosen;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

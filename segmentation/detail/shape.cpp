@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 double hullPixelArea(const std::vector<cv::Point>& hull) {
   if (hull.empty()) return 0;
@@ -39,4 +39,4 @@ bool touchesBorder(const cv::Rect& box, const cv::Size& size) {
   return box.x == 0 || box.y == 0 || box.br().x == size.width || box.br().y == size.height;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

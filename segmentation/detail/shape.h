@@ -3,7 +3,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Area of the convex hull of pixel positions, measured on the pixels' outline rather than through
 // their centres, so that it compares with a pixel count (a filled disc gets solidity 1, not more).
@@ -18,4 +18,4 @@ std::vector<cv::Rect> labelBoxes(const cv::Mat& labels);
 // Whether a box within an image of `size` reaches the image's edge.
 bool touchesBorder(const cv::Rect& box, const cv::Size& size);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -10,7 +10,7 @@
 #include "segmentation/detail/distanceTransform.h"
 #include "segmentation/detail/mergeConvex.h"
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 // Two peaks stay separate when the saddle between them lies at least this share of the smaller
@@ -140,4 +140,4 @@ cv::Mat labelParticles(const cv::Mat& mask, bool split) {
   return labels;
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 
-namespace solidtex::detail {
+namespace solidtex::segmentation::detail {
 
 // Labels the particles of a CV_8U mask (non-zero = particle): CV_32S, 0 on background, 1..N in
 // raster order of each particle's first pixel. Without `split`, a particle is an 8-connected
@@ -13,4 +13,4 @@ namespace solidtex::detail {
 // (mergeWhereMoreConvex).
 cv::Mat labelParticles(const cv::Mat& mask, bool split);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::segmentation::detail

@@ -13,7 +13,7 @@
 #include "synthesis/detail/KdTree.h"
 #include "synthesis/detail/Pca.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 namespace {
 
 // The Gaussian stack's level for a spacing: blurred over about half the spacing, so that samples
@@ -193,4 +193,4 @@ AppearanceLevel buildAppearanceLevel(const DenseVolume& exemplar, const Exemplar
   return out;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

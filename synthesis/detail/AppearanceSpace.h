@@ -6,7 +6,7 @@
 
 #include "common/DenseVolume.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Settings of one appearance-space level.
 struct AppearanceOptions {
@@ -56,4 +56,4 @@ struct AppearanceLevel {
 AppearanceLevel buildAppearanceLevel(const DenseVolume& exemplar, const ExemplarDomain& domain, int spacing,
                                      const AppearanceOptions& options);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

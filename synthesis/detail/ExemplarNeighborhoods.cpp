@@ -1,6 +1,6 @@
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 Eigen::MatrixXf gatherExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape) {
   const int x0 = -shape.lo(), y0 = -shape.lo();
@@ -38,4 +38,4 @@ ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const Ne
   return n;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -8,7 +8,7 @@
 #include "synthesis/detail/Pca.h"
 #include "synthesis/detail/RgbImage.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Every neighbourhood that lies wholly inside one exemplar level, as full vectors and PCA-reduced.
 /// Neighbourhoods are numbered row-major over their valid centres: centre (x, y) with
@@ -41,4 +41,4 @@ Eigen::MatrixXf gatherExemplarNeighborhoods(const RgbImage& image, const Neighbo
 ExemplarNeighborhoods buildExemplarNeighborhoods(const RgbImage& image, const NeighborhoodShape& shape,
                                                  int pcaDims);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

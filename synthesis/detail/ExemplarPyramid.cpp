@@ -6,7 +6,7 @@
 
 #include "common/Error.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 namespace {
 
@@ -124,4 +124,4 @@ ExemplarPyramid buildExemplarPyramid(const RgbImage& finest, int levels, const s
   return p;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -6,7 +6,7 @@
 
 #include "synthesis/detail/RgbImage.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// An exemplar at every synthesis level, index 0 the coarsest; each level is the next finer one
 /// halved (area average), so exemplar pixel p at level l corresponds to 2p + {0,1}^2 at level l+1.
@@ -33,4 +33,4 @@ RgbImage halve(const RgbImage& image);
 ExemplarPyramid buildExemplarPyramid(const RgbImage& finest, int levels,
                                      const std::vector<float>& control = {});
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 namespace {
 
 RgbImage blankImage(int width, int height) {
@@ -102,4 +102,4 @@ RgbImage rebuildFromSources(const RgbImage& image, const std::vector<std::int32_
   return current;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -4,7 +4,7 @@
 
 #include "synthesis/detail/RgbImage.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// The detail coefficients of one Haar level, per coarse pixel and channel (width * height * 3 each).
 /// With the averaging normalisation, the 2x2 block p00 p10 / p01 p11 (x right, y down) has the
@@ -47,4 +47,4 @@ HaarPyramid buildHaarPyramid(const RgbImage& exemplar, int levels);
 RgbImage rebuildFromSources(const RgbImage& image, const std::vector<std::int32_t>& sources,
                             const HaarPyramid& pyramid);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -12,7 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <Eigen/Core>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 namespace {
 
@@ -184,4 +184,4 @@ void InvertedFileIndex::knnOfAllPoints(int k, std::int32_t* ids, float* squaredD
   });
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

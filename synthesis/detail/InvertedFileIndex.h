@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <memory>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Settings of InvertedFileIndex. The k-means is kept short: analysis time, not the last percent
 /// of recall, is the aim.
@@ -46,4 +46,4 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -7,7 +7,7 @@
 
 #include <nanoflann.hpp>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 namespace {
 
@@ -73,4 +73,4 @@ std::int32_t KdTree::nearest(const float* query, float* squaredDistance, float e
   return id;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -2,7 +2,7 @@
 #include <cstdint>
 #include <memory>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Exact (or eps-approximate) nearest neighbours among `count` points of `dims` floats stored
 /// row-major (point m at points + m*dims); the caller keeps the points alive. Built once,
@@ -29,4 +29,4 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

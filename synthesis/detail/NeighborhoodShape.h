@@ -1,6 +1,6 @@
 #pragma once
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// A square size x size neighbourhood of pixels around a centre pixel. Offsets run from lo() to hi()
 /// on both axes (for even sizes the centre sits just right/below the middle). Vectors are laid out
@@ -36,4 +36,4 @@ inline void writePixelFeatures(const NeighborhoodShape& shape, const float* p00,
   out += 12;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

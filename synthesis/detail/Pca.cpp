@@ -5,7 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 double Pca::keptVariance() const {
   const double total = eigenvalues.cast<double>().sum();
@@ -65,4 +65,4 @@ Pca fitPca(const Eigen::MatrixXf& samples, int dims) {
   return pca;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

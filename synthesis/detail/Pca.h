@@ -1,7 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Principal component analysis of column vectors: y = basisᵀ (x - mean), x ≈ mean + basis y.
 struct Pca {
@@ -25,4 +25,4 @@ struct Pca {
 /// Covariance is accumulated in double precision; deterministic.
 Pca fitPca(const Eigen::MatrixXf& samples, int dims);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// A plain float RGB image, row-major, 3 interleaved channels (R,G,B), sRGB in [0,1] unless stated.
 struct RgbImage {
@@ -14,4 +14,4 @@ struct RgbImage {
   float* at(int x, int y) { return data.data() + 3 * (std::size_t(y) * width + x); }
 };
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

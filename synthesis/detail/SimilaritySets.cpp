@@ -9,7 +9,7 @@
 
 #include "synthesis/detail/KdTree.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 namespace {
 
@@ -124,4 +124,4 @@ SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& n, int k, i
   return sets;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -5,7 +5,7 @@
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/InvertedFileIndex.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// k-coherence similarity sets (Tong et al. 2002): for every exemplar neighbourhood m, the
 /// neighbourhood itself followed by its k-1 nearest others in PCA space, sorted by increasing
@@ -35,4 +35,4 @@ SimilaritySets buildApproximateSimilaritySets(const ExemplarNeighborhoods& neigh
 SimilaritySets bruteForceSimilaritySets(const ExemplarNeighborhoods& neighborhoods, int k,
                                         int minSeparation = 0);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -9,7 +9,7 @@
 
 #include "synthesis/detail/histograms.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 namespace {
 
@@ -232,4 +232,4 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
   return count ? sum / double(count) / D : 0.0;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -8,7 +8,7 @@
 #include "synthesis/detail/SliceNeighborhoods.h"
 #include "synthesis/detail/WorkVolume.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// The search phase's result: for each matched slice neighbourhood (SliceCentreGrid), the nearest
 /// exemplar neighbourhood e_{v,i} and the full-dimension squared distance ||s_{v,i} - e_{v,i}||^2.
@@ -43,4 +43,4 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& exempl
                    const SearchSettings& settings, SliceMatches& matches,
                    std::vector<std::int64_t>& indexHistogram);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -1,6 +1,6 @@
 #include "synthesis/detail/SliceNeighborhoods.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::array<int, 3>& c,
                              const NeighborhoodShape& shape, float* out) {
@@ -29,4 +29,4 @@ void gatherSliceNeighborhood(const WorkVolume& volume, int axis, const std::arra
       writePixelFeatures(shape, at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1), out);
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

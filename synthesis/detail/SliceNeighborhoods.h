@@ -5,7 +5,7 @@
 #include "synthesis/detail/NeighborhoodShape.h"
 #include "synthesis/detail/WorkVolume.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// The slice orthogonal to `axis` (0 = x, 1 = y, 2 = z) maps exemplar x to volume axis u and
 /// exemplar y to volume axis w: x-slices (y, z), y-slices (x, z), z-slices (x, y).
@@ -80,4 +80,4 @@ void forEachCoveringCentre(const SliceCentreGrid& grid, const NeighborhoodShape&
   }
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -3,7 +3,7 @@
 
 #include <tbb/parallel_for.h>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Number of interleaved voxel batches: one per coordinate parity (x&1, y&1, z&1).
 inline constexpr int kParityBatches = 8;
@@ -32,4 +32,4 @@ void forEachVoxelInBatchSequential(int n, int batch, F&& f) {
       for (int x = bx; x < n; x += 2) f(std::array<int, 3>{x, y, z}, (std::size_t(z) * n + y) * n + x);
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

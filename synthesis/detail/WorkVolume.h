@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// The volume being synthesised at one level: a periodic n^3 cube, x fastest.
 struct WorkVolume {
@@ -22,4 +22,4 @@ struct WorkVolume {
   float* at(std::size_t i) { return rgb.data() + 3 * i; }
 };
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

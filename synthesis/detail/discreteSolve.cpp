@@ -6,7 +6,7 @@
 
 #include "synthesis/detail/VoxelBatches.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 std::vector<std::int64_t> positionHistogramOf(const std::vector<std::int32_t>& source, int pixels) {
   std::vector<std::int64_t> h(pixels, 0);
@@ -231,4 +231,4 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
   }
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -9,7 +9,7 @@
 #include "synthesis/detail/WorkVolume.h"
 #include "synthesis/detail/histograms.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Settings of the discrete solver.
 struct DiscreteSolveSettings {
@@ -46,4 +46,4 @@ void discreteSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarN
 /// Counts how many voxels copy each exemplar pixel (`pixels` bins).
 std::vector<std::int64_t> positionHistogramOf(const std::vector<std::int32_t>& source, int pixels);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

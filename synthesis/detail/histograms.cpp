@@ -2,7 +2,7 @@
 
 #include <numeric>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 double colorHistogramWeight(double w, const std::array<double, 3>& synthesizedAtBins,
                             const std::array<double, 3>& exemplarAtBins) {
@@ -35,4 +35,4 @@ ChannelHistograms channelHistograms(const float* rgb, std::size_t count, int bin
   return h;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

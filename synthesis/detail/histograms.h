@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Chen–Wang eq. 3 (Kopf et al.'s colour histogram re-weighting):
 /// w' = w / (1 + sum_j max(0, Hs_j(b_j(e)) - He_j(b_j(e)))), given for each histogram j the value
@@ -54,4 +54,4 @@ struct ChannelHistograms {
 /// Histograms of `count` interleaved RGB colours.
 ChannelHistograms channelHistograms(const float* rgb, std::size_t count, int bins);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

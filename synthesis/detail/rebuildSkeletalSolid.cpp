@@ -7,7 +7,7 @@
 
 #include "synthesis/detail/SliceNeighborhoods.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 namespace {
 
 // Adds slice `k` orthogonal to `axis`, rebuilt, to the 2^levels fine slices it covers.
@@ -67,4 +67,4 @@ WorkVolume rebuildSkeletalSolid(const WorkVolume& coarse, const HaarPyramid& pyr
   return fine;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

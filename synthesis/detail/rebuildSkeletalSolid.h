@@ -2,7 +2,7 @@
 #include "synthesis/detail/HaarPyramid.h"
 #include "synthesis/detail/WorkVolume.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Section 3 of Pan et al.: the full-resolution solid from a coarse one whose voxels record the coarse
 /// exemplar pixel they copy. Every slice of each of the three directions is rebuilt in 2D
@@ -13,4 +13,4 @@ namespace solidtex::synthesis {
 /// mixes three. Same output for any thread count.
 WorkVolume rebuildSkeletalSolid(const WorkVolume& coarse, const HaarPyramid& pyramid);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

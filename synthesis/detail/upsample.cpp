@@ -7,7 +7,7 @@
 
 #include "common/Random.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 WorkVolume randomVolume(int n, const RgbImage& exemplar, std::uint64_t seed) {
   WorkVolume v;
@@ -84,4 +84,4 @@ WorkVolume upsampleColors(const WorkVolume& coarse) {
   return v;
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

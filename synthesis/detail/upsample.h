@@ -4,7 +4,7 @@
 #include "synthesis/detail/RgbImage.h"
 #include "synthesis/detail/WorkVolume.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// A volume of n^3 voxels, each copying a uniformly random exemplar pixel (colour and source);
 /// voxel i draws from its own stream deriveSeed(seed, i), so the result is thread-count independent.
@@ -21,4 +21,4 @@ WorkVolume upsampleSources(const WorkVolume& coarse, int coarseExemplarWidth, co
 /// at integer coordinates, child 2x+d sits at coarse coordinate x + d/2 - 1/4). No sources.
 WorkVolume upsampleColors(const WorkVolume& coarse);
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -4,7 +4,7 @@
 
 #include "synthesis/detail/VoxelBatches.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar, const ExemplarNeighborhoods& ex,
                           const SliceMatches& matches, const ChannelHistograms& exemplarHistogram,
@@ -54,4 +54,4 @@ void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar, const Ex
   }
 }
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

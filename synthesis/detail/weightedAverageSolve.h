@@ -9,7 +9,7 @@
 #include "synthesis/detail/WorkVolume.h"
 #include "synthesis/detail/histograms.h"
 
-namespace solidtex::synthesis {
+namespace solidtex::synthesis::detail {
 
 /// Settings of Kopf et al.'s least-squares (IRLS) solver.
 struct WeightedAverageSettings {
@@ -27,4 +27,4 @@ void weightedAverageSolve(WorkVolume& volume, const RgbImage& exemplar,
                           const ChannelHistograms& exemplarHistogram, ChannelHistograms& volumeHistogram,
                           const WeightedAverageSettings& settings = {});
 
-}  // namespace solidtex::synthesis
+}  // namespace solidtex::synthesis::detail

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "voxel/vdbIO.h"
+#include "io/vdbIO.h"
 
 namespace fs = std::filesystem;
 

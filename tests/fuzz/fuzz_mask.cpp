@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string& path = file.write(data + 4, size - 4);
   if (solidtex::fuzz::tooLargeToFuzz(path)) return 0;
   try {
-    const cv::Mat mask = solidtex::detail::loadMask(path, photoSize);
+    const cv::Mat mask = solidtex::segmentation::detail::loadMask(path, photoSize);
     // The promise callers rely on: one byte per pixel, at the photo's size.
     if (mask.type() != CV_8U || mask.size() != photoSize) __builtin_trap();
   } catch (const solidtex::InputError&) {

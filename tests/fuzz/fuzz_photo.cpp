@@ -6,8 +6,8 @@
 #include "common/Error.h"
 #include "imageLimit.h"
 #include "inputFile.h"
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/imageIO.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static solidtex::fuzz::InputFile file("photo.png");

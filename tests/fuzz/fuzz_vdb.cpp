@@ -5,7 +5,7 @@
 
 #include "common/Error.h"
 #include "inputFile.h"
-#include "voxel/vdbIO.h"
+#include "io/vdbIO.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static solidtex::fuzz::InputFile file("volume.vdb");

@@ -26,7 +26,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
 
 Surface surfaceOf(const HullMesh& mesh) {
-  const auto soup = detail::polygonSoupOf<Kernel::Point_3>(mesh);
+  const auto soup = mesh::detail::polygonSoupOf<Kernel::Point_3>(mesh);
   Surface surface;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, surface);
   return surface;

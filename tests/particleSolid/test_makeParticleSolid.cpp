@@ -5,9 +5,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "io/imageIO.h"
 #include "particleSolid/makeParticleSolid.h"
 #include "particleSolid/particleSolidReport.h"
-#include "segmentation/imageIO.h"
 
 namespace solidtex {
 namespace {

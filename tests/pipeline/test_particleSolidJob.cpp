@@ -9,11 +9,11 @@
 
 #include "common/Error.h"
 #include "common/ThreadLimit.h"
+#include "io/vdbIO.h"
 #include "pipeline/compareJob.h"
 #include "pipeline/particleSolidJob.h"
 #include "tests/scratchPath.h"
 #include "validation/sectionStatistics.h"
-#include "voxel/vdbIO.h"
 
 namespace solidtex {
 namespace {

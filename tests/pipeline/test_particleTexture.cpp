@@ -10,10 +10,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/srgb.h"
+#include "io/imageIO.h"
+#include "io/vdbIO.h"
 #include "pipeline/particleSolidJob.h"
-#include "segmentation/imageIO.h"
 #include "tests/scratchPath.h"
-#include "voxel/vdbIO.h"
 
 namespace solidtex {
 namespace {

@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "common/distributionDistance.h"
+#include "io/vdbIO.h"
 #include "pipeline/particleSolidJob.h"
 #include "tests/scratchPath.h"
 #include "validation/sectionStatistics.h"
-#include "voxel/vdbIO.h"
 
 namespace solidtex {
 namespace {

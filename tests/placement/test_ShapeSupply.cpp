@@ -6,7 +6,7 @@
 
 #include "placement/detail/ShapeSupply.h"
 
-namespace solidtex::detail {
+namespace solidtex::placement::detail {
 namespace {
 
 // A photo of two particles, an ellipse and a disc, as segmentation would report it.
@@ -75,4 +75,4 @@ TEST(ShapeSupply, ShapesAreMadeAtTheSupplysScale) {
   EXPECT_LT(double(b.fit.voxels.size()), 0.5 * double(a.fit.voxels.size()));
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::placement::detail

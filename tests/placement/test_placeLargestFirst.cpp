@@ -281,7 +281,7 @@ TEST(CropPlacement, ABlockOfALargerPlacementHasNoWallsToThinItsFaces) {
   const auto field = makeSpaciousnessField(PlacerKind::Edt, outer, 20);
   PlacementOptions options;
   options.dims = outer;
-  options.counted = VolumeBox{{8, 8, 8}, inner};
+  options.counted = Box::at({8, 8, 8}, inner);
   options.voxelsPerPixel = 0.8;
   const PlacementResult whole = placeLargestFirst(stats, factory, *field, options);
   const PlacementResult block = cropPlacement(whole, {8, 8, 8}, inner);

@@ -87,6 +87,21 @@ class InMemoryTest(unittest.TestCase):
         as_float = solidtex.analyze(self.photo.astype(np.float64) / 255)
         self.assertEqual(as_float["particle_count"], solidtex.analyze(self.photo)["particle_count"])
 
+    def test_a_mask_array_reads_as_the_same_mask_saved_as_png(self):
+        dark = self.photo[:, :, 0] < 128
+        png = os.path.join(self.folder.name, "mask.png")
+        Image.fromarray(np.where(dark, 255, 0).astype(np.uint8)).save(png)
+        from_file = solidtex.analyze(self.photo, mask=png)
+        self.assertEqual(solidtex.analyze(self.photo, mask=dark), from_file)
+        self.assertEqual(solidtex.analyze(self.photo, mask=np.where(dark, 1.0, 0.0)), from_file)
+        self.assertGreaterEqual(from_file["particle_count"], 25)
+        with self.assertRaises(solidtex.Error) as error:
+            solidtex.analyze(self.photo, mask=dark[:100])
+        self.assertIn("mask is 150x100 but the photo is 150x150", str(error.exception))
+        with self.assertRaises(TypeError) as error:
+            solidtex.analyze(self.photo, mask=3)
+        self.assertIn("mask", str(error.exception))
+
     def test_output_and_report_write_the_volume_and_the_report(self):
         vdb = os.path.join(self.folder.name, "python.vdb")
         report = os.path.join(self.folder.name, "python.json")

@@ -2,10 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
 #include "segmentation/detail/color.h"
 #include "segmentation/detail/separateBackground.h"
-#include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {
@@ -58,9 +58,9 @@ TEST(SegmentationExemplars, LeopardSpots) {
 }
 
 TEST(SegmentationExemplars, InvertedCoinsGiveTheBackground) {
-  const cv::Mat linear = detail::srgbToLinear(loadPhoto(test::dataPath("particles/coins.png")));
-  const cv::Mat coins = detail::separateBackground(linear, 12, false);
-  const cv::Mat background = detail::separateBackground(linear, 12, true);
+  const cv::Mat linear = segmentation::detail::srgbToLinear(loadPhoto(test::dataPath("particles/coins.png")));
+  const cv::Mat coins = segmentation::detail::separateBackground(linear, 12, false);
+  const cv::Mat background = segmentation::detail::separateBackground(linear, 12, true);
   EXPECT_LT(cv::countNonZero(coins & background), int(0.01 * double(coins.total())));  // small specks differ
   EXPECT_GT(cv::countNonZero(coins | background), int(0.99 * double(coins.total())));
 }

@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {

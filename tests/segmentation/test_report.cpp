@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
 #include "segmentation/drawLabels.h"
-#include "segmentation/imageIO.h"
 #include "segmentation/reportJson.h"
 #include "testHelpers.h"
 

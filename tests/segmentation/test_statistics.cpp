@@ -7,8 +7,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/srgb.h"
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
-#include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {

@@ -140,9 +140,9 @@ TEST(SegmentationSynthetic, BorderParticlesAreFlaggedAndLeftOutOfTheHistogram) {
 
 TEST(SegmentationSynthetic, InvertSwapsTheClasses) {
   const std::vector<Disc> discs{{{60, 60}, 20, {0.1f, 0.1f, 0.1f}}, {{150, 100}, 25, {0.1f, 0.1f, 0.1f}}};
-  const cv::Mat linear = detail::srgbToLinear(discPhoto({220, 180}, kPaper, discs, 0.01));
-  const cv::Mat normal = detail::separateBackground(linear, 8, false);
-  const cv::Mat inverted = detail::separateBackground(linear, 8, true);
+  const cv::Mat linear = segmentation::detail::srgbToLinear(discPhoto({220, 180}, kPaper, discs, 0.01));
+  const cv::Mat normal = segmentation::detail::separateBackground(linear, 8, false);
+  const cv::Mat inverted = segmentation::detail::separateBackground(linear, 8, true);
   EXPECT_EQ(cv::countNonZero(normal & inverted), 0);
   EXPECT_EQ(cv::countNonZero(normal | inverted), int(normal.total()));
 

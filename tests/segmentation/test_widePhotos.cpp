@@ -8,10 +8,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
+#include "io/imageIO.h"
 #include "segmentation/analyzeExemplar.h"
 #include "segmentation/detail/distanceTransform.h"
 #include "segmentation/detail/splitParticles.h"
-#include "segmentation/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {
@@ -40,7 +40,8 @@ TEST(SegmentationWidePhotos, DistanceTransformIsExact) {
     cv::Mat mask(rng.uniform(1, 40), rng.uniform(1, 40), CV_8UC1);
     rng.fill(mask, cv::RNG::UNIFORM, 0, 256);
     mask = mask > rng.uniform(200, 256);  // sparse zeros, sometimes none
-    EXPECT_LE(cv::norm(detail::euclideanDistance(mask), bruteForceDistance(mask), cv::NORM_INF), 1e-4)
+    EXPECT_LE(cv::norm(segmentation::detail::euclideanDistance(mask), bruteForceDistance(mask), cv::NORM_INF),
+              1e-4)
         << "trial " << trial << ", " << mask.cols << "x" << mask.rows;
   }
 }
@@ -49,18 +50,18 @@ TEST(SegmentationWidePhotos, DistanceTransformIsExactOnLongRows) {
   cv::Mat mask(9, 9000, CV_8UC1, cv::Scalar(255));
   mask.col(100).setTo(0);
   mask.at<uchar>(4, 8500) = 0;
-  const cv::Mat distance = detail::euclideanDistance(mask);
+  const cv::Mat distance = segmentation::detail::euclideanDistance(mask);
   for (int x : {0, 100, 4095, 4096, 4097, 4098, 6000, 8300, 8499, 8999}) {
     const double expected = std::min(std::abs(x - 100.0), std::hypot(x - 8500.0, 0 - 4.0));
     EXPECT_NEAR(distance.at<float>(0, x), expected, 1e-3) << x;
     EXPECT_NEAR(distance.at<float>(4, x), std::min(std::abs(x - 100.0), std::abs(x - 8500.0)), 1e-3) << x;
   }
-  EXPECT_EQ(cv::countNonZero(detail::euclideanDistance(cv::Mat::zeros(8, 8192, CV_8UC1))), 0);
+  EXPECT_EQ(cv::countNonZero(segmentation::detail::euclideanDistance(cv::Mat::zeros(8, 8192, CV_8UC1))), 0);
 }
 
 TEST(SegmentationWidePhotos, EmptyWideMaskHasNoParticles) {
   double most = 0;
-  cv::minMaxLoc(detail::labelParticles(cv::Mat::zeros(8, 8192, CV_8UC1), true), nullptr, &most);
+  cv::minMaxLoc(segmentation::detail::labelParticles(cv::Mat::zeros(8, 8192, CV_8UC1), true), nullptr, &most);
   EXPECT_EQ(most, 0);
 }
 

@@ -7,9 +7,10 @@
 #include <Eigen/Dense>
 
 #include "common/Error.h"
+#include "io/frameFieldIO.h"
+#include "io/vdbIO.h"
 #include "synthesis/FrameField.h"
 #include "tests/scratchPath.h"
-#include "voxel/vdbIO.h"
 
 using namespace solidtex;
 

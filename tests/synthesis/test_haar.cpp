@@ -10,7 +10,7 @@
 #include "synthesis/detail/rebuildSkeletalSolid.h"
 
 using namespace solidtex;
-using namespace solidtex::synthesis;
+using namespace solidtex::synthesis::detail;
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include "synthesis/detail/discreteSolve.h"
 #include "synthesis/detail/histograms.h"
 
-using namespace solidtex::synthesis;
+using namespace solidtex::synthesis::detail;
 
 TEST(Histograms, ColorWeightFollowsEquation3) {
   // Excess only where the synthesised histogram is above the exemplar's: 0.5 (channel 0) + 0.25 (channel 2).

@@ -13,7 +13,7 @@
 #include "synthesis/detail/SimilaritySets.h"
 
 using namespace solidtex;
-using namespace solidtex::synthesis;
+using namespace solidtex::synthesis::detail;
 
 namespace {
 

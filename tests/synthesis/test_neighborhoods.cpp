@@ -11,7 +11,7 @@
 #include "synthesis/detail/upsample.h"
 
 using namespace solidtex;
-using namespace solidtex::synthesis;
+using namespace solidtex::synthesis::detail;
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 using namespace solidtex;
-using namespace solidtex::synthesis;
+using namespace solidtex::synthesis::detail;
 
 namespace {
 

@@ -146,7 +146,7 @@ TEST_P(RegionOfTheWholeVolume, EqualsTheSameBoxOfTheWholeVolume) {
   o.periodic = periodic;
   const VolumeSynthesisResult whole = synthesizeFromVolume(exemplar, o);
   // periodic: a box at the faces, whose windows run past them
-  const VoxelBox box = periodic ? VoxelBox{{0, 1, 38}, {9, 8, 44}} : VoxelBox{{3, 17, 30}, {21, 36, 41}};
+  const Box box = periodic ? Box{{0, 1, 38}, {9, 8, 44}} : Box{{3, 17, 30}, {21, 36, 41}};
   o.region = box;
   const VolumeSynthesisResult part = synthesizeFromVolume(exemplar, o);
   const Dims d = box.dims();
@@ -178,7 +178,7 @@ TEST(SynthesizeFromVolume, RefusesBadInput) {
   };
   o.levels = 9;
   expectOptionError(o, "--levels");
-  for (const VoxelBox& region : {VoxelBox{{0, 0, 0}, {17, 4, 4}}, VoxelBox{{5, 5, 5}, {5, 5, 5}}}) {
+  for (const Box& region : {Box{{0, 0, 0}, {17, 4, 4}}, Box{{5, 5, 5}, {5, 5, 5}}}) {
     o = smallOptions(16);
     o.region = region;
     expectOptionError(o, "--region");

@@ -2,7 +2,7 @@
 #include <mutex>
 #include <string>
 
-namespace solidtex::detail {
+namespace solidtex::io::detail {
 
 // While alive, whatever anything in the process writes to file descriptor 2 (libpng, libjpeg,
 // libtiff print their own complaints there) goes to an anonymous file instead of the terminal, so
@@ -27,4 +27,4 @@ private:
   int capture_ = -1;  // the anonymous file
 };
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::io::detail

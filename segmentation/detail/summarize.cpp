@@ -1,27 +1,10 @@
+#include "segmentation/detail/summarize.h"
+
 #include <algorithm>
 #include <map>
 #include <utility>
 
-#include "segmentation/ExemplarStats.h"
-#include "segmentation/detail/summarize.h"
-
-namespace solidtex {
-
-int AreaHistogram::binOf(double area) const {
-  const auto upper = std::upper_bound(edges.begin(), edges.end(), area);
-  return std::clamp(int(upper - edges.begin()) - 1, 0, 9);
-}
-
-std::vector<std::size_t> statisticalParticles(const std::vector<Particle2D>& particles) {
-  std::vector<std::size_t> inner, all;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    all.push_back(i);
-    if (!particles[i].border) inner.push_back(i);
-  }
-  return inner.empty() ? all : inner;
-}
-
-namespace detail {
+namespace solidtex::segmentation::detail {
 
 AreaHistogram buildAreaHistogram(const std::vector<const Particle2D*>& particles) {
   AreaHistogram h;
@@ -49,5 +32,4 @@ std::vector<SizePair> buildSizePairs(const std::vector<const Particle2D*>& parti
   return pairs;
 }
 
-}  // namespace detail
-}  // namespace solidtex
+}  // namespace solidtex::segmentation::detail

@@ -5,14 +5,9 @@
 #include <string>
 
 #include "common/Grid.h"
+#include "common/VoxelSize.h"
 
 namespace solidtex {
-
-/// The edge of a voxel in some unit, for the stacks' calibration.
-struct VoxelSize {
-  double size = 1;
-  std::string unit = "voxel";  ///< e.g. "pixel": the photo's pixels, which a user may know in µm
-};
 
 /// The sample type of a stack's pages.
 enum class StackSample { UInt8, Int32, Float32 };

@@ -6,9 +6,9 @@
 #include <openvdb/openvdb.h>
 
 #include "common/Error.h"
-#include "voxel/checkVdbLayout.h"
-#include "voxel/readVdbGrids.h"
-#include "voxel/vdbIO.h"
+#include "io/checkVdbLayout.h"
+#include "io/detail/vdbGrids.h"
+#include "io/vdbIO.h"
 
 namespace solidtex {
 namespace {
@@ -183,7 +183,7 @@ TEST(VdbLayout, RootTilesBehindEveryFixedSizeMapPass) {
     const auto path = tempPath("tiles.vdb");
     openvdb::io::File(path.string()).write({density, ids});
     EXPECT_EQ(checkVdbLayout(path.string()), (std::vector<long>{2, 1})) << transform->mapType();
-    EXPECT_EQ(readVdbGrids(path.string()).grids.size(), 2u) << transform->mapType();
+    EXPECT_EQ(io::detail::readVdbGrids(path.string()).grids.size(), 2u) << transform->mapType();
     fs::remove(path);
   }
 }

@@ -11,9 +11,9 @@
 #include <unistd.h>
 
 #include "common/srgb.h"
+#include "io/writeNpy.h"
+#include "io/writeVolumeExports.h"
 #include "tests/scratchPath.h"
-#include "voxel/writeNpy.h"
-#include "voxel/writeVolumeExports.h"
 
 namespace solidtex {
 namespace {

@@ -1,12 +1,12 @@
-#include "voxel/writeVolumeExports.h"
+#include "io/writeVolumeExports.h"
 
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 
 #include "common/srgb.h"
-#include "voxel/writeNpy.h"
-#include "voxel/writeVti.h"
+#include "io/writeNpy.h"
+#include "io/writeVti.h"
 
 namespace solidtex {
 namespace {

@@ -1,11 +1,11 @@
-#include "segmentation/detail/checkImageLayout.h"
+#include "io/detail/checkImageLayout.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 
-namespace solidtex::detail {
+namespace solidtex::io::detail {
 namespace {
 
 std::string pngProblem(std::ifstream& in, std::uint64_t size) {
@@ -71,4 +71,4 @@ std::string imageLayoutProblem(const std::string& path) {
   return "";
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::io::detail

@@ -1,4 +1,4 @@
-#include "segmentation/detail/CapturedStderr.h"
+#include "io/detail/CapturedStderr.h"
 
 #include <cstdio>
 #include <iostream>
@@ -6,7 +6,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-namespace solidtex::detail {
+namespace solidtex::io::detail {
 namespace {
 
 constexpr std::size_t kMaxCaptured = 4096;  // bytes kept: the gist, not a flood of warnings
@@ -92,4 +92,4 @@ std::string CapturedStderr::finish() {
   return capture_ >= 0 ? oneLine(readAll(capture_)) : std::string();
 }
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::io::detail

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/OutputFiles.h"
-#include "voxel/SolidVolume.h"
-#include "voxel/writeTiffStack.h"
+#include "common/SolidVolume.h"
+#include "io/writeTiffStack.h"
 
 namespace solidtex {
 

@@ -1,4 +1,4 @@
-#include "synthesis/synthesizeMatrix.h"
+#include "particleSolid/synthesizeMatrix.h"
 
 #include <algorithm>
 

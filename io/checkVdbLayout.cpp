@@ -1,4 +1,4 @@
-#include "voxel/checkVdbLayout.h"
+#include "io/checkVdbLayout.h"
 
 #include <cstdint>
 #include <cstring>

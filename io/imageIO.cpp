@@ -1,4 +1,4 @@
-#include "segmentation/imageIO.h"
+#include "io/imageIO.h"
 
 #include <algorithm>
 #include <cctype>
@@ -14,10 +14,10 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
+#include "common/srgb.h"
 #include "common/writeFileBytes.h"
-#include "segmentation/detail/CapturedStderr.h"
-#include "segmentation/detail/checkImageLayout.h"
-#include "segmentation/detail/color.h"
+#include "io/detail/CapturedStderr.h"
+#include "io/detail/checkImageLayout.h"
 
 namespace solidtex {
 namespace {
@@ -54,12 +54,12 @@ std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) fail(path, "file not found");
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not an image");
-  if (const std::string problem = detail::imageLayoutProblem(path); !problem.empty())
+  if (const std::string problem = io::detail::imageLayoutProblem(path); !problem.empty())
     fail(path, "cannot decode the image, it is truncated or corrupt (" + problem + ")");
   // Colour, not colour times coverage: keep RGBA files' colour as stored.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  detail::CapturedStderr libraryOutput;
+  io::detail::CapturedStderr libraryOutput;
   auto in = OIIO::ImageInput::open(path, &config);
   const std::string printed = libraryOutput.finish();
   if (!in) fail(path, "not an image OpenImageIO can read (" + withPrinted(OIIO::geterror(), printed) + ")");
@@ -124,7 +124,7 @@ cv::Mat decodeRgb(const std::string& path, OIIO::ImageInput& in, const OIIO::Ima
   cv::Mat rgb(spec.height, spec.width, CV_32FC3);
   std::vector<float> strip;
   const int step = stripRows(spec);
-  detail::CapturedStderr libraryOutput;
+  io::detail::CapturedStderr libraryOutput;
   for (int y = 0; y < spec.height; y += step) {
     if (!readRows(in, spec, y, std::min(spec.height, y + step), strip)) {
       const std::string message = in.geterror();
@@ -159,7 +159,10 @@ cv::Mat loadPhoto(const std::string& path) {
                 photoMemoryBytes(spec.width, spec.height));
   cv::Mat rgb = decodeRgb(path, *in, spec);
   cv::patchNaNs(rgb, 0.0);
-  if (isLinearEncoded(spec)) return detail::linearToSrgb(rgb);
+  if (isLinearEncoded(spec))
+    rgb.forEach<cv::Vec3f>([](cv::Vec3f& pixel, const int*) {
+      for (int c = 0; c < 3; ++c) pixel[c] = linearToSrgb(pixel[c]);
+    });
   cv::min(cv::max(rgb, 0.0), 1.0, rgb);
   return rgb;
 }
@@ -201,7 +204,7 @@ void writeImage(const std::string& path, const cv::Mat& srgb) {
   std::vector<unsigned char> encoded;
   OIIO::Filesystem::IOVecOutput memory(encoded);
   const OIIO::ImageSpec spec(packed.cols, packed.rows, packed.channels(), OIIO::TypeDesc::UINT8);
-  detail::CapturedStderr libraryOutput;
+  io::detail::CapturedStderr libraryOutput;
   bool ok = out->set_ioproxy(&memory) && out->open(path, spec) &&
             out->write_image(OIIO::TypeDesc::UINT8, packed.data);
   ok = out->close() && ok;

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "voxel/SolidVolume.h"
+#include "common/SolidVolume.h"
 
 namespace solidtex {
 

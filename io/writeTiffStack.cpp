@@ -1,4 +1,4 @@
-#include "voxel/writeTiffStack.h"
+#include "io/writeTiffStack.h"
 
 #include <vector>
 
@@ -6,7 +6,7 @@
 #include <tiffio.h>
 
 #include "common/Error.h"
-#include "segmentation/detail/CapturedStderr.h"
+#include "io/detail/CapturedStderr.h"
 
 namespace solidtex {
 namespace {
@@ -65,7 +65,7 @@ void writeTiffStack(const std::string& path, const Dims& dims, int channels, Sta
   if (!out) throw InputError("cannot write " + path + ": no TIFF writer available");
   const std::vector<OIIO::ImageSpec> pages(std::size_t(dims.z), pageSpec(dims, channels, sample, voxelSize));
   const std::size_t pageBytes = std::size_t(dims.x) * dims.y * channels * typeOf(sample).size();
-  detail::CapturedStderr libraryOutput;  // libtiff prints its warnings and errors
+  io::detail::CapturedStderr libraryOutput;  // libtiff prints its warnings and errors
   bool ok = out->open(path, int(pages.size()), pages.data());
   for (int z = 0; ok && z < dims.z; ++z) {
     if (z > 0) ok = out->open(path, pages[std::size_t(z)], OIIO::ImageOutput::AppendSubimage);

@@ -10,8 +10,8 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
-#include "segmentation/detail/CapturedStderr.h"
-#include "segmentation/imageIO.h"
+#include "io/detail/CapturedStderr.h"
+#include "io/imageIO.h"
 #include "testHelpers.h"
 
 namespace solidtex {
@@ -45,7 +45,7 @@ void writeWithOiio(const fs::path& path, int width, int height, int channels, OI
   ASSERT_TRUE(out->close());
 }
 
-TEST(SegmentationImageIO, RoundTripsAnRgbImage) {
+TEST(ImageIO, RoundTripsAnRgbImage) {
   const fs::path path = freshTempDir() / "rgb.png";
   cv::Mat rgb(10, 12, CV_8UC3);
   for (int y = 0; y < rgb.rows; ++y)
@@ -61,7 +61,7 @@ TEST(SegmentationImageIO, RoundTripsAnRgbImage) {
         EXPECT_FLOAT_EQ(loaded.at<cv::Vec3f>(y, x)[c], rgb.at<cv::Vec3b>(y, x)[c] / 255.0f);
 }
 
-TEST(SegmentationImageIO, WritesFloatImagesRoundedToEightBits) {
+TEST(ImageIO, WritesFloatImagesRoundedToEightBits) {
   const fs::path path = freshTempDir() / "float.png";
   const cv::Mat srgb(9, 9, CV_32FC3, cv::Scalar(0.1, 0.5, 0.9));
   writeImage(path.string(), srgb);
@@ -69,7 +69,7 @@ TEST(SegmentationImageIO, WritesFloatImagesRoundedToEightBits) {
   EXPECT_LE(cv::norm(loaded, srgb, cv::NORM_INF), 0.5 / 255.0 + 1e-6);
 }
 
-TEST(SegmentationImageIO, LeavesNoTemporaryFileBehind) {
+TEST(ImageIO, LeavesNoTemporaryFileBehind) {
   const fs::path dir = freshTempDir();
   writeImage((dir / "a.png").string(), cv::Mat(8, 8, CV_8UC3, cv::Scalar(1, 2, 3)));
   std::vector<fs::path> files;
@@ -78,7 +78,7 @@ TEST(SegmentationImageIO, LeavesNoTemporaryFileBehind) {
   EXPECT_EQ(files[0], "a.png");
 }
 
-TEST(SegmentationImageIO, RefusesAnUnwritablePath) {
+TEST(ImageIO, RefusesAnUnwritablePath) {
   const fs::path dir = freshTempDir();
   EXPECT_THROW(writeImage((dir / "missing" / "a.png").string(), cv::Mat(8, 8, CV_8UC3, cv::Scalar(0))),
                InputError);
@@ -86,7 +86,7 @@ TEST(SegmentationImageIO, RefusesAnUnwritablePath) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-TEST(SegmentationImageIO, GreyBecomesEqualChannels) {
+TEST(ImageIO, GreyBecomesEqualChannels) {
   const fs::path path = freshTempDir() / "grey.png";
   writeImage(path.string(), cv::Mat(8, 10, CV_8UC1, cv::Scalar(128)));
   const cv::Mat loaded = loadPhoto(path.string());
@@ -94,7 +94,7 @@ TEST(SegmentationImageIO, GreyBecomesEqualChannels) {
   EXPECT_EQ(loaded.at<cv::Vec3f>(3, 4), cv::Vec3f(128 / 255.0f, 128 / 255.0f, 128 / 255.0f));
 }
 
-TEST(SegmentationImageIO, ReadsSixteenBitAndDropsAlpha) {
+TEST(ImageIO, ReadsSixteenBitAndDropsAlpha) {
   const fs::path path = freshTempDir() / "rgba16.png";
   std::vector<std::uint16_t> pixels(8 * 8 * 4);
   for (std::size_t i = 0; i < pixels.size(); i += 4) {
@@ -112,7 +112,7 @@ TEST(SegmentationImageIO, ReadsSixteenBitAndDropsAlpha) {
   EXPECT_FLOAT_EQ(p[2], 0.0f);
 }
 
-TEST(SegmentationImageIO, EncodesLinearFloatImagesToSrgb) {
+TEST(ImageIO, EncodesLinearFloatImagesToSrgb) {
   const fs::path path = freshTempDir() / "linear.exr";
   std::vector<float> pixels(8 * 8 * 3, 0.18f);
   writeWithOiio(path, 8, 8, 3, OIIO::TypeDesc::FLOAT, pixels);
@@ -120,17 +120,17 @@ TEST(SegmentationImageIO, EncodesLinearFloatImagesToSrgb) {
   EXPECT_NEAR(loaded.at<cv::Vec3f>(2, 2)[1], 0.461356f, 1e-4f);
 }
 
-TEST(SegmentationImageIO, MissingFileIsAnInputError) {
+TEST(ImageIO, MissingFileIsAnInputError) {
   expectInputError((freshTempDir() / "nowhere.png").string(), "not found");
 }
 
-TEST(SegmentationImageIO, NonImageFileIsAnInputError) {
+TEST(ImageIO, NonImageFileIsAnInputError) {
   const fs::path path = freshTempDir() / "notes.png";
   test::writeBytes(path, {'h', 'e', 'l', 'l', 'o', '\n'});
   expectInputError(path.string(), "not an image");
 }
 
-TEST(SegmentationImageIO, TruncatedPngIsAnInputError) {
+TEST(ImageIO, TruncatedPngIsAnInputError) {
   const fs::path dir = freshTempDir();
   const fs::path whole = dir / "whole.png";
   cv::Mat noise(64, 64, CV_8UC3);
@@ -144,19 +144,19 @@ TEST(SegmentationImageIO, TruncatedPngIsAnInputError) {
   expectInputError(cut.string(), "truncated");
 }
 
-TEST(SegmentationImageIO, OnePixelImageIsAnInputError) {
+TEST(ImageIO, OnePixelImageIsAnInputError) {
   const fs::path path = freshTempDir() / "dot.png";
   writeImage(path.string(), cv::Mat(1, 1, CV_8UC3, cv::Scalar(9, 9, 9)));
   expectInputError(path.string(), "too small");
 }
 
-TEST(SegmentationImageIO, HugeHeaderIsRefusedBeforeDecoding) {
+TEST(ImageIO, HugeHeaderIsRefusedBeforeDecoding) {
   const fs::path path = freshTempDir() / "huge.png";
   test::writeBytes(path, test::pngHeaderClaiming(30000, 30000));
   expectInputError(path.string(), "30000x30000");
 }
 
-TEST(SegmentationImageIO, HeaderNeedingMoreMemoryThanAvailableIsRefused) {
+TEST(ImageIO, HeaderNeedingMoreMemoryThanAvailableIsRefused) {
   const fs::path path = freshTempDir() / "large.png";
   test::writeBytes(path, test::pngHeaderClaiming(20000, 20000));  // within the side limit
   setMemoryLimit(std::uint64_t(1) << 30);
@@ -165,7 +165,7 @@ TEST(SegmentationImageIO, HeaderNeedingMoreMemoryThanAvailableIsRefused) {
   setMemoryLimit(0);
 }
 
-TEST(SegmentationImageIO, ReadsInStripsAcrossWideRows) {
+TEST(ImageIO, ReadsInStripsAcrossWideRows) {
   // 6000 RGB floats a row: a strip (1 MiB of floats) holds 14 rows, so this image takes several.
   const fs::path path = freshTempDir() / "wide.png";
   cv::Mat pattern(100, 6000, CV_8UC3);
@@ -178,7 +178,7 @@ TEST(SegmentationImageIO, ReadsInStripsAcrossWideRows) {
   EXPECT_EQ(cv::norm(loadPhoto(path.string()), expected, cv::NORM_INF), 0);
 }
 
-TEST(SegmentationImageIO, ReadsTiledImages) {
+TEST(ImageIO, ReadsTiledImages) {
   const fs::path path = freshTempDir() / "tiled.tif";
   const int width = 40, height = 37;
   std::vector<std::uint8_t> pixels(std::size_t(width) * height * 3);
@@ -198,7 +198,7 @@ TEST(SegmentationImageIO, ReadsTiledImages) {
         EXPECT_FLOAT_EQ(loaded.at<cv::Vec3f>(y, x)[c], pixels[(std::size_t(y) * width + x) * 3 + c] / 255.0f);
 }
 
-TEST(SegmentationImageIO, CorruptPngIsAnInputErrorAndPrintsNothing) {
+TEST(ImageIO, CorruptPngIsAnInputErrorAndPrintsNothing) {
   const fs::path dir = freshTempDir();
   const fs::path whole = dir / "whole.png";
   cv::Mat noise(64, 64, CV_8UC3);
@@ -216,11 +216,11 @@ TEST(SegmentationImageIO, CorruptPngIsAnInputErrorAndPrintsNothing) {
   expectInputError(corrupt.string(), "corrupt");
 }
 
-TEST(SegmentationImageIO, CapturedStderrTakesWhatLibrariesPrint) {
+TEST(ImageIO, CapturedStderrTakesWhatLibrariesPrint) {
   testing::internal::CaptureStderr();
   std::string captured;
   {
-    detail::CapturedStderr capture;
+    io::detail::CapturedStderr capture;
     std::fprintf(stderr, "libfoo error: first line\n\n");
     const char raw[] = "  second line  \n";
     ASSERT_EQ(::write(STDERR_FILENO, raw, sizeof raw - 1), ssize_t(sizeof raw - 1));
@@ -231,14 +231,14 @@ TEST(SegmentationImageIO, CapturedStderrTakesWhatLibrariesPrint) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "after");
 }
 
-TEST(SegmentationImageIO, CapturedStderrNests) {
+TEST(ImageIO, CapturedStderrNests) {
   testing::internal::CaptureStderr();
   std::string outer, inner;
   {
-    detail::CapturedStderr a;
+    io::detail::CapturedStderr a;
     std::fprintf(stderr, "outer\n");
     {
-      detail::CapturedStderr b;
+      io::detail::CapturedStderr b;
       std::fprintf(stderr, "inner\n");
       inner = b.finish();
     }
@@ -250,7 +250,7 @@ TEST(SegmentationImageIO, CapturedStderrNests) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
-TEST(SegmentationImageIO, ReadsTheExemplars) {
+TEST(ImageIO, ReadsTheExemplars) {
   const cv::Mat leopard = loadPhoto(test::dataPath("particles/leopard.png"));
   EXPECT_EQ(leopard.size(), cv::Size(64, 62));
   const cv::Mat gravel = loadPhoto(test::dataPath("particles/gravel.png"));

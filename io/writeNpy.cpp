@@ -1,4 +1,4 @@
-#include "voxel/writeNpy.h"
+#include "io/writeNpy.h"
 
 #include <cstdint>
 

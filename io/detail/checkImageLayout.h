@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-namespace solidtex::detail {
+namespace solidtex::io::detail {
 
 // Codec libraries allocate what a length field claims before they find the file too short for it
 // (a 691-byte PNG whose text chunk claims 1.29 GB; a 1.6 KB EXR whose string attribute claims
@@ -10,4 +10,4 @@ namespace solidtex::detail {
 // Returns the problem, or "" when the layout is plausible.
 std::string imageLayoutProblem(const std::string& path);
 
-}  // namespace solidtex::detail
+}  // namespace solidtex::io::detail

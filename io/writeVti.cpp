@@ -1,4 +1,4 @@
-#include "voxel/writeVti.h"
+#include "io/writeVti.h"
 
 #include <cstdint>
 #include <sstream>

@@ -1,3 +1,5 @@
+#include "segmentation/detail/color.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -5,11 +7,8 @@
 #include <opencv2/core.hpp>
 
 #include "common/srgb.h"
-#include "segmentation/detail/color.h"
 
-namespace solidtex {
-
-namespace detail {
+namespace solidtex::segmentation::detail {
 namespace {
 
 // A curve on [0,1] sampled finely enough that linear interpolation stays within 1e-6 of it (the
@@ -75,5 +74,4 @@ cv::Mat linearToLab(const cv::Mat& linear) {
   return lab;
 }
 
-}  // namespace detail
-}  // namespace solidtex
+}  // namespace solidtex::segmentation::detail

@@ -1,0 +1,150 @@
+#include "io/detail/vdbGrids.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <system_error>
+
+#include <openvdb/io/Archive.h>
+#include <openvdb/io/File.h>
+
+#include "common/Error.h"
+#include "common/memoryBudget.h"
+#include "io/checkVdbLayout.h"
+#include "io/detail/CapturedStderr.h"
+
+namespace solidtex::io::detail {
+namespace {
+
+// OpenVDB stamps each file with a random UUID: magic (8 bytes), format and library versions (12),
+// grid-offsets flag (1), then 36 ASCII characters.
+constexpr std::streamoff kUuidOffset = 21;
+constexpr std::size_t kUuidLength = 36;
+
+/// Replaces the random UUID by one hashed (FNV-1a, two seeds) from the rest of the file, so the
+/// same volume gives the same bytes.
+void stampContentUuid(const std::filesystem::path& file) {
+  std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
+  if (!io.is_open())
+    throw InputError("cannot write " + file.string() + ": cannot reopen it to stamp its UUID");
+  std::string uuid(kUuidLength, '\0');
+  io.seekg(kUuidOffset);
+  io.read(uuid.data(), std::streamsize(kUuidLength));
+  if (!io || uuid[8] != '-' || uuid[13] != '-' || uuid[18] != '-' || uuid[23] != '-')
+    throw std::logic_error("writeVdb: no UUID where OpenVDB's header keeps it");
+  std::uint64_t hash[2] = {0xcbf29ce484222325ull, 0x84222325cbf29ce4ull};
+  io.seekg(0);
+  std::vector<char> chunk(1 << 20);
+  std::streamoff position = 0;
+  while (io.read(chunk.data(), std::streamsize(chunk.size())) || io.gcount() > 0) {
+    for (std::streamsize i = 0; i < io.gcount(); ++i, ++position) {
+      if (position >= kUuidOffset && position < kUuidOffset + std::streamoff(kUuidLength)) continue;
+      for (auto& h : hash) h = (h ^ std::uint8_t(chunk[std::size_t(i)])) * 0x100000001b3ull;
+    }
+  }
+  io.clear();
+  char text[kUuidLength + 1];
+  std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32),
+                unsigned(hash[0] >> 16) & 0xffffu, unsigned(hash[0]) & 0xffffu, unsigned(hash[1] >> 48),
+                (unsigned long long)(hash[1] & 0xffffffffffffull));
+  io.seekp(kUuidOffset);
+  io.write(text, std::streamsize(kUuidLength));
+  if (!io.flush()) throw InputError("cannot write " + file.string() + ": cannot stamp its UUID");
+}
+
+// What reading a file may take: a damaged block inside a grid can still ask OpenVDB for memory
+// without end. Real files expand far less than a thousandfold, their trees being sparse themselves.
+std::uint64_t readingAllowance(const std::string& path) {
+  std::error_code ec;
+  const double bytes = std::max(1024.0 * double(std::filesystem::file_size(path, ec)), double(1u << 30));
+  return std::uint64_t(std::min(bytes, double(availableMemoryBytes())));
+}
+
+}  // namespace
+
+// OpenVDB's messages about a damaged file can quote whatever bytes it found (a "grid type" of 800
+// spaces, or of a gigabyte): keep printable characters, one space between words, and a short line.
+std::string readableReason(const std::string& what) {
+  constexpr std::size_t kLongest = 160;
+  std::string out;
+  for (const char c : what) {
+    if (out.size() >= kLongest) {
+      out += "...";
+      break;
+    }
+    const bool printable = c >= 0x21 && c <= 0x7e;
+    if (printable)
+      out += c;
+    else if (!out.empty() && out.back() != ' ')
+      out += ' ';
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out.empty() ? "damaged file" : out;
+}
+
+/// OpenVDB's own file writer does not check the stream it writes: this one writes the same bytes
+/// (a seekable archive) to a stream whose every failure is seen.
+class CheckedArchive : public openvdb::io::Archive {
+public:
+  void writeTo(std::ostream& out, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) const {
+    write(out, grids, /*seekable=*/true, meta);
+  }
+};
+
+void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+  try {
+    std::ofstream out(path, std::ios::out | std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno));
+    CheckedArchive archive;
+    archive.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    archive.writeTo(out, grids, meta);
+    out.close();
+    if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno ? errno : ENOSPC));
+    stampContentUuid(path);
+  } catch (const openvdb::Exception& e) {
+    throw InputError("cannot write " + path + ": " + e.what());
+  } catch (const std::ios_base::failure& e) {
+    throw InputError("cannot write " + path + ": " + e.what());
+  }
+}
+
+VdbContents readVdbGrids(const std::string& path) {
+  openvdb::initialize();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError("cannot read " + path + ": no such file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError("cannot read " + path + ": it is a folder");
+  checkVdbLayout(path);
+  VdbContents contents;
+  // OpenVDB prints warnings on damaged files ("multi-buffer trees are no longer supported"): the
+  // command's error, if any, is the one line.
+  detail::CapturedStderr libraryOutput;
+  try {
+    const MemoryCap cap(readingAllowance(path));
+    openvdb::io::File file(path);
+    file.open(/*delayLoad=*/false);
+    contents.grids = *file.getGrids();
+    contents.metadata = file.getMetadata();
+    file.close();
+  } catch (const std::bad_alloc&) {
+    throw InputError("cannot read " + path + ": damaged (a size in it asks for more memory than there is)");
+  } catch (const std::exception& e) {
+    throw InputError("cannot read " + path + ": not a readable OpenVDB file (" + readableReason(e.what()) +
+                     ")");
+  }
+  for (const auto& grid : contents.grids)
+    if (!grid) throw InputError("cannot read " + path + ": damaged (a grid could not be read)");
+  return contents;
+}
+
+openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& name) {
+  for (const auto& grid : contents.grids)
+    if (grid->getName() == name) return grid;
+  return nullptr;
+}
+
+}  // namespace solidtex::io::detail

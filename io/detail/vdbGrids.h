@@ -1,0 +1,32 @@
+#pragma once
+#include <string>
+
+#include <openvdb/openvdb.h>
+
+namespace solidtex::io::detail {
+
+// Every grid of a .vdb with the file's metadata.
+struct VdbContents {
+  openvdb::GridPtrVec grids;
+  openvdb::MetaMap::Ptr metadata;
+};
+
+// Reads a whole .vdb at once: without delayed loading, damage is found while reading, not later
+// when the grids are destroyed. Anything OpenVDB refuses, or memory a damaged size asks for, is
+// one InputError naming the file, with OpenVDB's reason cut to a readable line.
+VdbContents readVdbGrids(const std::string& path);
+
+// The grid named `name`, or null.
+openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& name);
+
+// OpenVDB's message about a damaged file, cut to printable words on one short line.
+std::string readableReason(const std::string& what);
+
+// Writes grids and file metadata to a .vdb (Blosc), checking every write: a full disk throws
+// InputError, never leaves a truncated file behind a success. The header's UUID is hashed from
+// the content, so the same grids give the same bytes. Commands write through OutputFiles, which
+// puts the file in place only when all their outputs are written.
+void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids,
+                   const openvdb::MetaMap& meta = {});
+
+}  // namespace solidtex::io::detail
