@@ -14,7 +14,8 @@ namespace {
 
 // Vertices snap to 1/65536 voxel: with sides up to kMaxParticleSide every orientation below is an
 // exact int64 product (at most 2^61), so shared edges split the rows consistently.
-constexpr double kGrid = 65536.0;
+constexpr int kGridBits = 16;
+constexpr double kGrid = double(std::int64_t(1) << kGridBits);
 constexpr std::int64_t kHalf = 32768;
 
 struct GridPoint {
@@ -39,16 +40,14 @@ void checkSides(int w, int h, int d) {
 struct BoxFit {
   Eigen::Matrix3d rotation;
   Eigen::Vector3d lo, scale;
-  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const {
-    return (rotation * v - lo).cwiseProduct(scale);
-  }
   HullPose pose() const { return {-1, scale.asDiagonal() * rotation, -scale.cwiseProduct(lo)}; }
 };
 
-BoxFit fitInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation, const Dims& dims) {
+// `turned`: the hull's vertices turned by `rotation`.
+BoxFit fitInBox(const HullMesh& hull, const std::vector<Eigen::Vector3d>& turned,
+                const Eigen::Matrix3d& rotation, const Dims& dims) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Eigen::Vector3d& v : hull.vertices) {
-    const Eigen::Vector3d p = rotation * v;
+  for (const Eigen::Vector3d& p : turned) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
@@ -58,8 +57,11 @@ BoxFit fitInBox(const HullMesh& hull, const Eigen::Matrix3d& rotation, const Dim
   return {rotation, lo, Eigen::Vector3d(dims.x, dims.y, dims.z).cwiseQuotient(extent)};
 }
 
-GridPoint snap(const Eigen::Vector3d& p) {
-  return {std::llround(p.x() * kGrid), std::llround(p.y() * kGrid), std::llround(p.z() * kGrid)};
+// The nearest grid step (halves up) without a libm call: every vertex of every shape passes here.
+std::int64_t toGrid(double v) {
+  const double t = v * kGrid + 0.5;
+  const auto truncated = std::int64_t(t);
+  return truncated - std::int64_t(t < double(truncated));
 }
 
 // Side of the row centre (py,pz) from edge a->b in the (y,z) plane. The centre is nudged by
@@ -73,23 +75,28 @@ int side(const GridPoint& a, const GridPoint& b, std::int64_t py, std::int64_t p
   return dy > 0 ? 1 : -1;
 }
 
-// Row centres j + 0.5 within [lo, hi] (grid units), clamped to the box.
+// Row centres j + 0.5 within [lo, hi] (grid units), clamped to the box. The arithmetic shifts are
+// floor divisions by kGrid.
 std::array<int, 2> rowRange(std::int64_t lo, std::int64_t hi, int count) {
-  const int first = int(std::ceil(double(lo - kHalf) / kGrid));
-  const int last = int(std::floor(double(hi - kHalf) / kGrid));
-  return {std::max(first, 0), std::min(last, count - 1)};
+  const std::int64_t first = -((kHalf - lo) >> kGridBits);  // ceil((lo - kHalf) / kGrid)
+  const std::int64_t last = (hi - kHalf) >> kGridBits;
+  return {int(std::max<std::int64_t>(first, 0)), int(std::min<std::int64_t>(last, count - 1))};
 }
 
+// Most triangles of a finely meshed hull lie between row centres: they are dropped on their box
+// before anything else is computed.
 void addCrossings(const GridPoint& a, const GridPoint& b, const GridPoint& c, const Dims& dims,
                   std::vector<Crossing>& out) {
+  const auto [j0, j1] = rowRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), dims.y);
+  if (j0 > j1) return;
+  const auto [k0, k1] = rowRange(std::min({a.z, b.z, c.z}), std::max({a.z, b.z, c.z}), dims.z);
+  if (k0 > k1) return;
   const std::int64_t normalX = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
   if (normalX == 0) return;  // edge-on to every row
   const int orientation = normalX > 0 ? 1 : -1;
   const double ab[3] = {double(b.x - a.x), double(b.y - a.y), double(b.z - a.z)};
   const double ac[3] = {double(c.x - a.x), double(c.y - a.y), double(c.z - a.z)};
   const double normalY = ab[2] * ac[0] - ab[0] * ac[2], normalZ = ab[0] * ac[1] - ab[1] * ac[0];
-  const auto [j0, j1] = rowRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), dims.y);
-  const auto [k0, k1] = rowRange(std::min({a.z, b.z, c.z}), std::max({a.z, b.z, c.z}), dims.z);
   for (int k = k0; k <= k1; ++k) {
     const std::int64_t pz = k * std::int64_t(kGrid) + kHalf;
     for (int j = j0; j <= j1; ++j) {
@@ -256,11 +263,16 @@ VoxelShape voxelize(const HullMesh& hull, const Eigen::Matrix3d& rotation, int w
   checkSides(w, h, d);
   VoxelShape shape;
   shape.dims = {w, h, d};
-  const BoxFit fit = fitInBox(hull, rotation, shape.dims);
+  std::vector<Eigen::Vector3d> turned(hull.vertices.size());
+  std::transform(hull.vertices.begin(), hull.vertices.end(), turned.begin(),
+                 [&](const Eigen::Vector3d& v) -> Eigen::Vector3d { return rotation * v; });
+  const BoxFit fit = fitInBox(hull, turned, rotation, shape.dims);
   shape.pose = fit.pose();
-  std::vector<GridPoint> grid(hull.vertices.size());
-  std::transform(hull.vertices.begin(), hull.vertices.end(), grid.begin(),
-                 [&](const Eigen::Vector3d& v) { return snap(fit(v)); });
+  std::vector<GridPoint> grid(turned.size());
+  std::transform(turned.begin(), turned.end(), grid.begin(), [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d q = (p - fit.lo).cwiseProduct(fit.scale);
+    return GridPoint{toGrid(q.x()), toGrid(q.y()), toGrid(q.z())};
+  });
   std::vector<Crossing> crossings;
   crossings.reserve(std::size_t(2) * std::size_t(h) * std::size_t(d));
   for (const auto& [a, b, c] : hull.triangles)
