@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -26,6 +27,9 @@ std::atomic<bool> slotLive[kSlots];
 std::atomic<bool> slotIsFolder[kSlots];
 std::atomic<int> slotCount{0};
 std::atomic<bool> committing{false};
+// The thread that writes the outputs. A signal delivered to any other thread is passed on to it, so
+// that no output is created or reopened between the handler's unlinks and its _exit.
+std::atomic<pid_t> outputThread{0};
 std::atomic<bool> interruptOnTerminal{false};
 // The real stderr, kept apart from fd 2, which may be pointed elsewhere for a while to capture a
 // library's own messages (CapturedStderr): the interrupt's line must still reach the user.
@@ -120,12 +124,15 @@ void writeAll(int fd, const char* text) {
 }
 
 extern "C" void onInterrupt(int signal) {
+  if (const pid_t writer = outputThread.load(); writer != 0 && ::gettid() != writer) {
+    const int savedErrno = errno;
+    ::syscall(SYS_tgkill, ::getpid(), writer, signal);
+    errno = savedErrno;
+    return;
+  }
   if (committing.load()) return;  // the outputs are being renamed into place: let it finish
-  // `timeout` signals the command and then its process group: the second signal may reach another
-  // thread while the first is handled. One cleans up and says so; the others wait for its _exit.
-  static std::atomic<bool> handling{false};
-  if (handling.exchange(true))
-    for (;;) ::pause();
+  // `timeout` signals the command and then its process group: the second signal waits, blocked by
+  // the handler's mask, until the _exit below.
   const int count = slotCount.load();
   for (int i = 0; i < count; ++i)
     if (slotLive[i] && !slotIsFolder[i]) ::unlink(slotPath[i]);
@@ -275,11 +282,13 @@ void OutputFiles::commit() {
 }
 
 void installInterruptHandlers() {
+  outputThread = ::gettid();
   interruptOnTerminal = ::isatty(STDERR_FILENO) != 0;
   if (const int err = ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3); err >= 0) interruptStderr = err;
   struct sigaction action {};
   action.sa_handler = onInterrupt;
   sigemptyset(&action.sa_mask);
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&action.sa_mask, signal);
   for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
 }
 

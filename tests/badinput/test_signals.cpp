@@ -54,8 +54,10 @@ bool writing(const fs::path& folder) {
 
 /// `deliveries` signals back to back, as `timeout` sends one to the command and one to its group.
 void expectInterruptedWhileWriting(int signal, int exitCode, int deliveries = 1) {
-  const fs::path out = emptyScratch("signal" + std::to_string(signal));
-  const fs::path err = out.parent_path() / ("signal" + std::to_string(signal) + ".stderr");
+  // One folder per case: ctest runs the cases at once, and a case must not see another's files.
+  const std::string name = "signal" + std::to_string(signal) + "x" + std::to_string(deliveries);
+  const fs::path out = emptyScratch(name);
+  const fs::path err = out.parent_path() / (name + ".stderr");
   const pid_t pid = start({"particles", kCoins, "--size", "160", "--quiet", "-o", (out / "v.vdb").string(),
                            "--report", (out / "r.json").string(), "--preview", (out / "p").string()},
                           err);
