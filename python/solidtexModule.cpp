@@ -197,9 +197,8 @@ void readMask(Keywords& keywords, SegmentationOptions& options) {
   if (array.dtype().kind() == 'b') {
     if (array.ndim() != 2) throw py::value_error("mask must have the shape (height, width)");
     const auto values = py::array_t<bool, py::array::c_style>::ensure(array);
-    cv::Mat(int(array.shape(0)), int(array.shape(1)), CV_8U, const_cast<bool*>(values.data()))
-        .copyTo(options.mask);
-    options.mask = options.mask != 0;
+    options.mask =
+        cv::Mat(int(array.shape(0)), int(array.shape(1)), CV_8U, const_cast<bool*>(values.data())) != 0;
     return;
   }
   std::string name;

@@ -76,10 +76,7 @@ bool hasUserMask(const SegmentationOptions& options) { return !options.mask.empt
 cv::Mat userMask(const SegmentationOptions& options, const cv::Size& photoSize) {
   if (options.mask.empty()) return segmentation::detail::loadMask(*options.maskPath, photoSize);
   if (options.mask.type() != CV_8UC1) throw InputError("mask must be CV_8U (one 8-bit channel)");
-  if (options.mask.size() != photoSize)
-    throw InputError("mask is " + std::to_string(options.mask.cols) + "x" +
-                     std::to_string(options.mask.rows) + " but the photo is " +
-                     std::to_string(photoSize.width) + "x" + std::to_string(photoSize.height));
+  segmentation::detail::checkMaskSize(options.mask.size(), photoSize, "mask");
   return options.mask != 0;
 }
 

@@ -9,4 +9,7 @@ namespace solidtex::segmentation::detail {
 // photo's size; throws InputError otherwise or when it cannot be read.
 cv::Mat loadMask(const std::string& path, const cv::Size& photoSize);
 
+// Throws InputError, `name` first, unless the mask is the photo's size.
+void checkMaskSize(const cv::Size& maskSize, const cv::Size& photoSize, const std::string& name);
+
 }  // namespace solidtex::segmentation::detail
