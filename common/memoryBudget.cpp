@@ -1,5 +1,6 @@
 #include "common/memoryBudget.h"
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -167,6 +168,12 @@ void requireVolumeMemory(const std::string& what, const Dims& dims, double bytes
   if (voxels > 4294967295.0)
     throw OptionError(what + " of " + size + " voxels: more than 2^32 - 1 voxels, the most a volume holds");
   requireMemory(what + " of " + size + " voxels", voxels * bytesPerVoxel + kEveryRun);
+}
+
+void returnFreedMemory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 double peakMemoryMiB() {

@@ -29,6 +29,11 @@ void requireMemory(const std::string& what, double bytes);
 /// 32-bit indices reach.
 void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel);
 
+/// Hands the memory this process has freed back to the system. The C library keeps freed blocks for
+/// reuse, and after millions of small ones (a placement's buckets) that can be gigabytes the next
+/// large allocation does not reuse.
+void returnFreedMemory();
+
 /// Peak resident memory of this process so far, in MiB.
 double peakMemoryMiB();
 

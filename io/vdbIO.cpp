@@ -11,6 +11,9 @@
 #include <new>
 #include <system_error>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 
@@ -27,27 +30,49 @@ openvdb::CoordBBox boxOf(const Dims& dims) {
   return openvdb::CoordBBox(openvdb::Coord(0, 0, 0), openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
 }
 
-/// Dense data in our x-fastest layout wrapped for OpenVDB without a copy.
-template <typename VdbValue, typename Value>
-openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> wrap(const Dims& dims,
-                                                                const std::vector<Value>& data) {
-  static_assert(sizeof(VdbValue) == sizeof(Value));
-  return {boxOf(dims), reinterpret_cast<VdbValue*>(const_cast<Value*>(data.data()))};
+template <typename T>
+void release(std::vector<T>& data) {
+  std::vector<T>().swap(data);
 }
 
+// Hands the whole pages of [begin, end) back to the system; they read as zeros if touched again.
+void releasePages(const void* begin, const void* end) {
+  const auto page = std::uintptr_t(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t from = (std::uintptr_t(begin) + page - 1) / page * page;
+  const std::uintptr_t to = std::uintptr_t(end) / page * page;
+  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+}
+
+// A grid of the dense data, which it consumes: built one slab of leaves (8 z-layers, contiguous in our
+// layout) at a time, each slab's memory going back to the system once its leaves are built, so that
+// a volume's array and its grid are never both held whole.
 template <typename GridT, typename Value>
-typename GridT::Ptr sparseFrom(const Dims& dims, const std::vector<Value>& data,
+typename GridT::Ptr sparseFrom(const Dims& dims, std::vector<Value>& data,
                                const typename GridT::ValueType& tolerance, const std::string& name,
                                const openvdb::math::Transform::Ptr& xform) {
-  auto grid = GridT::create(typename GridT::ValueType(openvdb::zeroVal<typename GridT::ValueType>()));
-  openvdb::tools::copyFromDense(wrap<typename GridT::ValueType>(dims, data), *grid, tolerance);
+  using VdbValue = typename GridT::ValueType;
+  static_assert(sizeof(VdbValue) == sizeof(Value));
+  auto grid = GridT::create(VdbValue(openvdb::zeroVal<VdbValue>()));
+  constexpr int kSlab = int(GridT::TreeType::LeafNodeType::DIM);
+  const std::size_t layer = std::size_t(dims.x) * std::size_t(dims.y);
+  for (int z = 0; z < dims.z; z += kSlab) {
+    const int depth = std::min(kSlab, dims.z - z);
+    Value* first = data.data() + std::size_t(z) * layer;
+    const openvdb::CoordBBox slab(openvdb::Coord(0, 0, z),
+                                  openvdb::Coord(dims.x - 1, dims.y - 1, z + depth - 1));
+    openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> dense(slab,
+                                                                     reinterpret_cast<VdbValue*>(first));
+    openvdb::tools::copyFromDense(dense, *grid, tolerance);
+    releasePages(first, first + std::size_t(depth) * layer);
+  }
+  release(data);
   grid->setName(name);
   grid->setTransform(xform);
   return grid;
 }
 
 // density: the volume's own, or 1 on the particles (the active voxels of `ids`), or 1 everywhere.
-openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::Int32Grid::Ptr& ids,
+openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, const openvdb::Int32Grid::Ptr& ids,
                                     const openvdb::math::Transform::Ptr& xform) {
   openvdb::FloatGrid::Ptr grid;
   if (!volume.density.empty()) {
@@ -68,12 +93,7 @@ openvdb::FloatGrid::Ptr densityGrid(const SolidVolume& volume, const openvdb::In
   return grid;
 }
 
-template <typename T>
-void release(std::vector<T>& data) {
-  std::vector<T>().swap(data);
-}
-
-// Each dense array is released as soon as its grid is built, so the volume is never held twice.
+// Each dense array is consumed by its grid, so the volume is never held twice.
 openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
   // A region of a larger volume keeps its index space from 0 and is placed by its transform.
@@ -81,15 +101,12 @@ openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
   openvdb::Int32Grid::Ptr ids;
   if (!volume.particleId.empty())
     ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
-  release(volume.particleId);
   openvdb::GridPtrVec grids;
   grids.push_back(densityGrid(volume, ids, xform));
-  release(volume.density);
   if (!volume.color.empty()) {
     // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
     auto color =
         sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
-    release(volume.color);
     color->setVectorType(openvdb::VEC_INVARIANT);
     grids.push_back(color);
     auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
@@ -105,11 +122,9 @@ openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
     grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
                                                    "source_position", xform));
   }
-  if (!volume.sourceVoxel.empty()) {
+  if (!volume.sourceVoxel.empty())
     grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.sourceVoxel, openvdb::Vec3s(-1.f),
                                                    "source", xform));
-    release(volume.sourceVoxel);
-  }
   return grids;
 }
 

@@ -237,7 +237,9 @@ const PlacementResult& ParticleSolidBuilder::place() {
     report(progress_, line, stats.areaFraction > 0 ? fraction / stats.areaFraction : -1);
   };
   solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
-  if (margin > 0) solid_.placement = cropPlacement(solid_.placement, {margin, margin, margin}, dims);
+  field.reset();  // placement's largest part, given back before the solid is painted
+  returnFreedMemory();
+  if (margin > 0) solid_.placement = cropToCountedBox(std::move(solid_.placement));
   return solid_.placement;
 }
 

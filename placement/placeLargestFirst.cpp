@@ -228,7 +228,8 @@ public:
         tried_(options.dims.count()) {
     result_.dims = options.dims;
     result_.periodic = options.periodic;
-    result_.ids.assign(options.dims.count(), 0);
+    result_.counted = counted_;
+    result_.ids.assign(counted_.dims().count(), 0);
   }
 
   // The field may still be taking the last particle when an exception leaves run(): wait for it,
@@ -410,14 +411,17 @@ private:
     const int id = int(result_.particles.size()) + 1;
     const Voxel origin = placement::detail::originAt(shape, spot);
     volumeVoxels_.clear();
+    const Dims countedIds = counted_.dims();
     std::size_t counted = 0;
     for (const Voxel& v : shape.voxels) {
       const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};  // whole: the field wraps it itself
       const Voxel inside = options_.periodic ? options_.dims.wrap(w) : w;
-      result_.ids[options_.dims.index(inside)] = id;
       occupied_.set(options_.dims.index(inside));
       volumeVoxels_.push_back(w);
-      counted += counted_.contains(inside);
+      if (!counted_.contains(inside)) continue;
+      result_.ids[countedIds.index(inside.x - counted_.lo.x, inside.y - counted_.lo.y,
+                                   inside.z - counted_.lo.z)] = id;
+      ++counted;
     }
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
@@ -460,8 +464,7 @@ private:
   std::array<double, kBins>
       countedPerBin_{};  ///< particles placed in every phase, each by its share inside counted_
   PlacementResult result_;
-  placement::detail::VoxelBits
-      occupied_;  ///< result_.ids != 0, as bits: what fitsAt reads, 1/32 of the ids' size
+  placement::detail::VoxelBits occupied_;  ///< every particle's voxels, as bits: what fitsAt reads
   placement::detail::VoxelBits
       tried_;  ///< spots the current shape was tried at (their words are cleared after)
   std::vector<Voxel> triedSpots_;

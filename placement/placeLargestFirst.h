@@ -27,7 +27,8 @@ const char* arrangementName(Arrangement arrangement);
 struct PlacementOptions {
   Dims dims{128, 128, 128};
   /// Where the area fraction is reached and counted, when the volume is a margin around the solid
-  /// that will be cut out of it (particles then run through the solid's faces); empty: everywhere.
+  /// that will be cut out of it (particles then run through the solid's faces; cropToCountedBox);
+  /// empty: everywhere. Only this box's ids are kept: outside it particles are obstacles.
   std::optional<Box> counted;
   /// The volume is a 3D torus: particles cross a face and continue on the opposite one (the field
   /// must be periodic too; no counted box).
@@ -62,7 +63,8 @@ struct PlacedParticle {
 struct PlacementResult {
   Dims dims;
   bool periodic = false;          ///< the volume is a 3D torus; particles' voxels wrap around it
-  std::vector<std::int32_t> ids;  ///< dims.count(), 0 background, 1..P
+  Box counted;                    ///< the box ids cover: PlacementOptions::counted, or the whole volume
+  std::vector<std::int32_t> ids;  ///< counted.count(), x fastest, 0 background, 1..P
   std::vector<PlacedParticle> particles;
   std::array<int, 10> placedPerBin{};
   std::array<int, 10> rejectedPerBin{};      ///< (w,h) tries that found no spot

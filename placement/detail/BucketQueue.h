@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/Random.h"
+#include "placement/detail/ChunkedBuckets.h"
 #include "placement/detail/uniformSample.h"
 #include "placement/detail/voxelSets.h"
 
@@ -40,7 +41,7 @@ public:
     }
     keys_[v] = newKey;
     if (newKey != 0)
-      buckets_[newKey].push_back(v);
+      buckets_.push(newKey, v);
     else
       --live_;
     if (stale_ > std::max(live_, keys_.size() / 4)) rebuild();
@@ -52,14 +53,14 @@ public:
   void sample(std::size_t minKey, std::size_t maxCount, Rng& rng, std::vector<VoxelIndex>& out) {
     for (std::size_t k = std::max<std::size_t>(minKey, 1); k < buckets_.size() && out.size() < maxCount;
          ++k) {
-      std::vector<VoxelIndex>& bucket = buckets_[k];
+      ChunkedBuckets::Bucket& bucket = buckets_[k];
       if (2 * staleIn_[k] > bucket.size()) compact(k);
       std::size_t taken = 0;
       while (out.size() < maxCount && taken < bucket.size()) {
         const std::size_t j = taken + std::size_t(uniformIndex(rng, bucket.size() - taken));
         if (keys_[bucket[j]] != k) {
           bucket[j] = bucket.back();
-          bucket.pop_back();
+          buckets_.popBack(k);
           --stale_;
           --staleIn_[k];
           continue;
@@ -82,36 +83,31 @@ public:
 
   /// Heap bytes held (keys and buckets), for memory reports.
   std::size_t bytes() const {
-    std::size_t total = keys_.capacity() * sizeof(Key) + staleIn_.capacity() * sizeof(std::size_t);
-    for (const auto& bucket : buckets_) total += bucket.capacity() * sizeof(VoxelIndex) + sizeof(bucket);
-    return total;
+    return keys_.capacity() * sizeof(Key) + staleIn_.capacity() * sizeof(std::size_t) + buckets_.bytes();
   }
 
 private:
   void compact(std::size_t k) {
-    std::erase_if(buckets_[k], [&](VoxelIndex v) { return keys_[v] != k; });
+    buckets_.filter(k, [&](VoxelIndex v) { return keys_[v] == k; });
     stale_ -= staleIn_[k];
     staleIn_[k] = 0;
   }
 
-  // Every bucket afresh from the keys, in index order, sized exactly.
+  // Every bucket afresh from the keys, in index order.
   void rebuild() {
-    std::vector<std::size_t> counts(buckets_.size());
-    for (Key k : keys_) ++counts[k];
-    for (std::size_t k = 1; k < buckets_.size(); ++k) {
-      buckets_[k].clear();
-      if (buckets_[k].capacity() > 2 * counts[k] + 64) buckets_[k].shrink_to_fit();
-      buckets_[k].reserve(counts[k]);
-    }
+    for (std::size_t k = 1; k < buckets_.size(); ++k) buckets_.clear(k);
+    live_ = 0;
     for (std::size_t v = 0; v < keys_.size(); ++v)
-      if (keys_[v] != 0) buckets_[keys_[v]].push_back(VoxelIndex(v));
-    live_ = keys_.size() - counts[0];
+      if (keys_[v] != 0) {
+        buckets_.push(keys_[v], VoxelIndex(v));
+        ++live_;
+      }
     stale_ = 0;
     std::fill(staleIn_.begin(), staleIn_.end(), 0);
   }
 
   std::vector<Key> keys_;
-  std::vector<std::vector<VoxelIndex>> buckets_;
+  ChunkedBuckets buckets_;
   std::vector<std::size_t> staleIn_;  ///< stale entries per bucket
   std::size_t live_ = 0;              ///< voxels with a non-zero key
   std::size_t stale_ = 0;             ///< bucket entries whose voxel has a lower key now

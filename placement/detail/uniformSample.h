@@ -11,9 +11,8 @@ namespace solidtex::placement::detail {
 /// Draws entries uniformly (with replacement) from buckets [first, buckets.size()) and hands each to
 /// `take`, which returns false for a stale entry (skipped: uniform over the live ones). Stops after
 /// `count` taken or 4 * count draws, so a bucket set that is mostly stale cannot stall it.
-template <class Bucket, class Take>
-void sampleUniformly(const std::vector<Bucket>& buckets, std::size_t first, std::size_t count, Rng& rng,
-                     Take&& take) {
+template <class Buckets, class Take>
+void sampleUniformly(const Buckets& buckets, std::size_t first, std::size_t count, Rng& rng, Take&& take) {
   std::vector<std::size_t> ends;  // cumulative entry counts from bucket `first` on
   std::size_t total = 0;
   for (std::size_t k = first; k < buckets.size(); ++k) ends.push_back(total += buckets[k].size());

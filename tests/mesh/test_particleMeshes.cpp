@@ -78,8 +78,9 @@ PlacementResult placeSolid(const ExemplarStats& stats, const ParticleFactory& fa
   options.periodic = periodic;
   options.voxelsPerPixel = voxelsPerPixelFor(stats, dims.x);
   options.maxParticles = kParticles;
-  const PlacementResult result = placeLargestFirst(stats, factory, *field, options);
-  return open ? cropPlacement(result, {margin, margin, margin}, dims) : result;
+  if (open) options.counted = Box::at({margin, margin, margin}, dims);
+  PlacementResult result = placeLargestFirst(stats, factory, *field, options);
+  return open ? cropToCountedBox(std::move(result)) : result;
 }
 
 // The voxels of the box around both a particle and its mesh; in a periodic volume, where they run past
