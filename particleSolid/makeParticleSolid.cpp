@@ -11,7 +11,7 @@
 #include "common/Random.h"
 #include "common/memoryBudget.h"
 #include "mesh/particleMeshes.h"
-#include "placement/cropPlacement.h"
+#include "placement/cropToCountedBox.h"
 #include "voxel/paintParticleSolid.h"
 
 namespace solidtex {

@@ -16,7 +16,7 @@
 #include "mesh/detail/polygonSoup.h"
 #include "mesh/meshTopology.h"
 #include "mesh/particleMeshes.h"
-#include "placement/cropPlacement.h"
+#include "placement/cropToCountedBox.h"
 #include "segmentation/analyzeExemplar.h"
 
 namespace solidtex {

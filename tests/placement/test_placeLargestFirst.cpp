@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
-#include "placement/cropPlacement.h"
+#include "placement/cropToCountedBox.h"
 #include "placement/placeLargestFirst.h"
 
 namespace solidtex {
@@ -274,7 +274,7 @@ double faceShellFraction(const PlacementResult& r, int depth) {
 
 // A block cut out of a placement in a larger volume (the open boundary): the photo's fraction inside
 // the block, particles running through its faces as often as anywhere, ids renumbered consistently.
-TEST(CropPlacement, ABlockOfALargerPlacementHasNoWallsToThinItsFaces) {
+TEST(CropToCountedBox, ABlockOfALargerPlacementHasNoWallsToThinItsFaces) {
   const ExemplarStats stats = discStats(kDiscs, 0.25);
   const ParticleFactory factory(stats, fewShapes());
   const Dims inner{48, 48, 48}, outer{64, 64, 64};

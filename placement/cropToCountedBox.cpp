@@ -1,4 +1,4 @@
-#include "placement/cropPlacement.h"
+#include "placement/cropToCountedBox.h"
 
 #include <stdexcept>
 
