@@ -161,13 +161,18 @@ void requireMemory(const std::string& what, double bytes) {
 
 void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel) {
   constexpr double kEveryRun = 160.0 * 1024 * 1024;
+  requireVolumeBytes(what, dims,
+                     double(dims.x) * double(dims.y) * double(dims.z) * bytesPerVoxel + kEveryRun);
+}
+
+void requireVolumeBytes(const std::string& what, const Dims& dims, double bytes) {
   if (dims.x <= 0 || dims.y <= 0 || dims.z <= 0) return;  // the command's own checks say what is wrong
   const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
   const std::string size =
       std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
   if (voxels > 4294967295.0)
     throw OptionError(what + " of " + size + " voxels: more than 2^32 - 1 voxels, the most a volume holds");
-  requireMemory(what + " of " + size + " voxels", voxels * bytesPerVoxel + kEveryRun);
+  requireMemory(what + " of " + size + " voxels", bytes);
 }
 
 void returnFreedMemory() {

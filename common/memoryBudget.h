@@ -29,6 +29,9 @@ void requireMemory(const std::string& what, double bytes);
 /// 32-bit indices reach.
 void requireVolumeMemory(const std::string& what, const Dims& dims, double bytesPerVoxel);
 
+/// requireVolumeMemory for work whose peak, `bytes` in all, is estimated by its own model.
+void requireVolumeBytes(const std::string& what, const Dims& dims, double bytes);
+
 /// Hands the memory this process has freed back to the system. The C library keeps freed blocks for
 /// reuse, and after millions of small ones (a placement's buckets) that can be gigabytes the next
 /// large allocation does not reuse.

@@ -17,9 +17,6 @@
 namespace solidtex {
 namespace {
 
-// Peak resident memory per voxel of the placement block: 691 MiB for gravel at 256^3 with walls.
-constexpr double kPlacementBytesPerVoxel = 40;
-
 constexpr int kSizingBootstraps = 8;  // a range of the size factor, at a fraction of the fit's time
 
 constexpr int kMatrixBlock = 64;     // largest edge of the synthesised matrix block, tiled over the volume
@@ -178,10 +175,18 @@ void checkParticleSolidOptions(const ParticleSolidOptions& options) {
     throw OptionError("--shapes must be in [1, 4096]");
 }
 
+double particleSolidPeakBytes(const Dims& dims, const Dims& placed) {
+  constexpr double kEveryRun = 200.0 * 1024 * 1024;
+  constexpr double kPerPlacedVoxel = 10.3, kIdBytes = 4, kPerVoxelWriting = 20.5;
+  const double voxels = double(dims.count()), placedVoxels = double(placed.count());
+  return kEveryRun + std::max(kPerPlacedVoxel * placedVoxels + kIdBytes * voxels, kPerVoxelWriting * voxels);
+}
+
 ParticleSolidBuilder::ParticleSolidBuilder(ParticleSolidOptions options, Progress progress)
     : options_(std::move(options)), progress_(std::move(progress)) {
   checkParticleSolidOptions(options_);
-  requireVolumeMemory("the volume", options_.dims, kPlacementBytesPerVoxel);
+  // The margin is not known before the photo is: at least this much.
+  requireVolumeBytes("the volume", options_.dims, particleSolidPeakBytes(options_.dims, options_.dims));
 }
 
 const ExemplarStats& ParticleSolidBuilder::analyze(const cv::Mat& photoSrgb, const std::string& name) {
@@ -214,8 +219,9 @@ const PlacementResult& ParticleSolidBuilder::place() {
   const Dims& dims = options_.dims;
   const int margin = options_.boundary == Boundary::Open ? openBoundaryMargin(stats, particleScale) : 0;
   const Dims placed{dims.x + 2 * margin, dims.y + 2 * margin, dims.z + 2 * margin};
-  requireVolumeMemory(margin > 0 ? "placing particles in a block" : "placing particles", placed,
-                      kPlacementBytesPerVoxel);
+  solid_.memoryEstimate = particleSolidPeakBytes(dims, placed);
+  requireVolumeBytes(margin > 0 ? "placing particles in a block" : "placing particles", placed,
+                     solid_.memoryEstimate);
   const bool periodic = options_.boundary == Boundary::Periodic;
   auto field =
       makeSpaciousnessField(options_.placer, placed, placementRadiusCap(stats, particleScale), periodic);

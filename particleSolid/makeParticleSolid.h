@@ -81,6 +81,7 @@ struct ParticleSolid {
   TextureChoice matrix, particleTexture;
   std::vector<ParticleMesh> meshes;  ///< when asked for, in the volume's index space
   PhaseTimer timer;                  ///< the phases so far; callers may time their own after them
+  double memoryEstimate = 0;  ///< bytes: the peak particleSolidPeakBytes expected, checked before placing
 };
 
 /// Refuses (OptionError) options out of range: the volume's edges, the scale, views and shapes.
@@ -114,6 +115,13 @@ private:
 /// The one-off form of ParticleSolidBuilder: all stages in order.
 ParticleSolid makeParticleSolid(const cv::Mat& photoSrgb, const std::string& name,
                                 const ParticleSolidOptions& options, const Progress& progress = {});
+
+/// Peak resident memory, in bytes, of making and writing a particle solid of `dims` whose particles are
+/// placed in a block of `placed` voxels (larger by the open boundary's margin). Measured on gravel
+/// from 96^3 to 512^3 (docs/performance.md): placing holds 10.3 bytes per placed voxel (the field's
+/// keys and bucket entries, the occupancy bits) and the ids, 4 per voxel; painting and writing 20.5
+/// per voxel (the colours, then their grid beside the id and density grids); every run 200 MiB.
+double particleSolidPeakBytes(const Dims& dims, const Dims& placed);
 
 /// The largest edge a volume may have; beyond it memory, not patience, runs out.
 constexpr int kMaxVolumeEdge = 2048;

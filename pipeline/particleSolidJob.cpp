@@ -76,6 +76,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   report["outputs"] = written;
   report["time_seconds"] = solid.timer.finish();
   report["peak_memory_mib"] = peakMemoryMiB();
+  report["memory_estimate_mib"] = solid.memoryEstimate / (1024.0 * 1024.0);
   writeReport(outputs, job.report, report);
   outputs.commit();
   line.done();
