@@ -31,7 +31,8 @@ TEST(MemoryEstimate, IsWithinAQuarterOfThePeakAtTwoSizes) {
     const auto report = nlohmann::json::parse(readFile(dir / "r.json"));
     const double peak = report["peak_memory_mib"].get<double>();
     const double estimate = report["memory_estimate_mib"].get<double>();
-    EXPECT_LT(std::abs(estimate - peak), 0.25 * peak) << size << "^3: estimate " << estimate << " MiB, peak " << peak;
+    EXPECT_LT(std::abs(estimate - peak), 0.25 * peak)
+        << size << "^3: estimate " << estimate << " MiB, peak " << peak;
     fs::remove_all(dir);
   }
 }
