@@ -134,6 +134,11 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   openvdb::initialize();
   if ((!volume.color.empty() || volume.density.empty()) && volume.color.size() != volume.dims.count())
     throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
+  // The grids consume their arrays slab by slab, handing pages back: a short one would lose others' data.
+  for (const std::size_t size : {volume.density.size(), volume.particleId.size(),
+                                 volume.sourcePosition.size(), volume.sourceVoxel.size()})
+    if (size != 0 && size != volume.dims.count())
+      throw std::logic_error("writeVdb: a grid does not match the volume's dimensions");
   openvdb::MetaMap meta;
   for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
   io::detail::writeVdbGrids(path, gridsOf(volume, voxelSize), meta);

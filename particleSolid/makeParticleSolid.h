@@ -121,7 +121,8 @@ ParticleSolid makeParticleSolid(const cv::Mat& photoSrgb, const std::string& nam
 /// from 96^3 to 512^3 (docs/performance.md): placing holds 10.3 bytes per placed voxel (the field's
 /// keys and bucket entries, the occupancy bits) and the ids, 4 per voxel; painting and writing 20.5
 /// per voxel (the colours, then their grid beside the id and density grids); every run 200 MiB.
-double particleSolidPeakBytes(const Dims& dims, const Dims& placed);
+/// The `delaunay` placer's triangulation adds 49 bytes per placed voxel.
+double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer);
 
 /// The largest edge a volume may have; beyond it memory, not patience, runs out.
 constexpr int kMaxVolumeEdge = 2048;

@@ -64,7 +64,7 @@ struct PlacementResult {
   Dims dims;
   bool periodic = false;          ///< the volume is a 3D torus; particles' voxels wrap around it
   Box counted;                    ///< the box ids cover: PlacementOptions::counted, or the whole volume
-  std::vector<std::int32_t> ids;  ///< counted.count(), x fastest, 0 background, 1..P
+  std::vector<std::int32_t> ids;  ///< counted.dims().count(), x fastest, 0 background, 1..P
   std::vector<PlacedParticle> particles;
   std::array<int, 10> placedPerBin{};
   std::array<int, 10> rejectedPerBin{};      ///< (w,h) tries that found no spot

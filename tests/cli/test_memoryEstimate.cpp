@@ -26,7 +26,7 @@ TEST(MemoryEstimate, IsWithinAQuarterOfThePeakAtTwoSizes) {
     const Outcome outcome =
         runSolidtex("particles " + shellWord(std::string(SOLIDTEX_DATA_DIR) + "/particles/gravel.png") +
                     " -o " + shellWord(dir / "g.vdb") + " --size " + std::to_string(size) +
-                    " --quiet --report " + shellWord(dir / "r.json"));
+                    " --threads 2 --quiet --report " + shellWord(dir / "r.json"));
     ASSERT_EQ(outcome.exitCode, 0) << size;
     const auto report = nlohmann::json::parse(readFile(dir / "r.json"));
     const double peak = report["peak_memory_mib"].get<double>();
