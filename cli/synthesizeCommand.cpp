@@ -1,9 +1,11 @@
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.h"
 #include "common/Error.h"
+#include "pipeline/growSolidJob.h"
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
 
@@ -70,6 +72,27 @@ void addVolumeOptions(CLI::App& command, SynthesizeVolumeJob& job, std::vector<i
           ->expected(6)};
 }
 
+// A photo solid grown to a large volume: the seed's photo options, the growth's volume options.
+std::shared_ptr<GrowSolidJob> growJobOf(const SynthesizeJob& photo, const SynthesizeVolumeJob& volume,
+                                        int seedEdge, int brickEdge) {
+  auto grow = std::make_shared<GrowSolidJob>();
+  grow->exemplar = photo.exemplar;
+  grow->output = photo.output;
+  grow->grow.seed = photo.synthesis;
+  grow->grow.seed.size = seedEdge;
+  grow->grow.volume = volume.synthesis;
+  grow->grow.volume.seed = photo.synthesis.seed;
+  grow->grow.volume.threads = photo.synthesis.threads;
+  grow->grow.brickEdge = brickEdge;
+  grow->report = photo.report;
+  grow->preview = photo.preview;
+  grow->exports = photo.exports;
+  grow->commandLine = photo.commandLine;
+  grow->progress = photo.progress;
+  grow->measure = photo.measure;
+  return grow;
+}
+
 }  // namespace
 
 Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
@@ -82,6 +105,8 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   auto dims = std::make_shared<std::vector<int>>();
   auto region = std::make_shared<std::vector<int>>();
   auto kinds = std::make_shared<ExemplarKindOptions>();
+  auto growFrom = std::make_shared<int>(-1);
+  auto brickEdge = std::make_shared<int>(0);
   SynthesisOptions& o = job->synthesis;
   CLI::App* command = app.add_subcommand("synthesize",
                                          "Make a continuous solid (.vdb) from an exemplar without particles: "
@@ -122,8 +147,18 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_flag("--periodic", volumeJob->synthesis.periodic,
                     "Make the volume a 3D torus whose copies tile without a seam (photo exemplars always "
                     "are; volume exemplars: each side a multiple of 2^(corrected levels))");
+  command
+      ->add_option("--grow-from", *growFrom,
+                   "Photo exemplars: make an N^3 solid by --method and grow it to --size or --dims by "
+                   "volume synthesis, brick by brick (default: " +
+                       std::to_string(kDefaultGrowSeed) + " past --size " +
+                       std::to_string(kLargestDirectPhotoSolid) + " or with --dims; 0: never)")
+      ->check(CLI::Range(0, 256));
+  command->add_option("--bricks", *brickEdge,
+                      "Grown solids: synthesise bricks of this edge one at a time (same bytes, less "
+                      "memory; default: the whole volume when it fits in memory)");
   for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
-                           "--similarity-search", "--iterations", "--control"})
+                           "--similarity-search", "--iterations", "--control", "--grow-from", "--bricks"})
     kinds->photoOnly.push_back(command->get_option(name));
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
@@ -133,7 +168,8 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_flag("!--quiet", job->progress, "No progress line");
   command->add_flag("!--no-quality", job->measure,
                     "Do not measure the result against the exemplar (the report's quality)");
-  return [job, volumeJob, method, distance, similaritySearch, dims, region, kinds, command] {
+  return [job, volumeJob, method, distance, similaritySearch, dims, region, kinds, growFrom, brickEdge,
+          command] {
     const SynthesisOptions& o = job->synthesis;  // as parsed
     if (std::filesystem::path(job->exemplar).extension() == ".vdb") {
       refuseOptionsOf(kinds->photoOnly, "photo");
@@ -160,10 +196,27 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
                 << v.synthesis.dims.z << " voxels from a volume exemplar\n";
       return 0;
     }
-    refuseOptionsOf(kinds->volumeOnly, "volume (.vdb)");
     job->synthesis.method = parseMethod(*method);
     job->synthesis.distance = parseDistance(*distance);
     job->synthesis.similaritySearch = parseSimilaritySearch(*similaritySearch);
+    const Dims out = dims->empty() ? Dims{o.size, o.size, o.size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
+    const int seedEdge =
+        growSeedEdge(*growFrom >= 0 ? std::optional<int>(*growFrom) : std::nullopt, !dims->empty(), out);
+    if (seedEdge > 0) {
+      refuseOptionsOf({command->get_option("--region"), command->get_option("--field")}, "volume (.vdb)");
+      SynthesizeVolumeJob& v = *volumeJob;
+      v.synthesis.dims = out;
+      if (*brickEdge < 0) throw OptionError("--bricks must be positive, got " + std::to_string(*brickEdge));
+      const auto growJob = growJobOf(*job, v, seedEdge, *brickEdge);
+      runGrowSolid(*growJob);
+      std::cout << job->output << ": " << out.x << "x" << out.y << "x" << out.z << " voxels grown from a "
+                << seedEdge << "^3 " << *method << " solid\n";
+      return 0;
+    }
+    refuseOptionsOf(kinds->volumeOnly, "volume (.vdb)");
+    if (command->get_option("--bricks")->count() > 0)
+      throw OptionError("--bricks applies to grown solids only (--grow-from, or --size past " +
+                        std::to_string(kLargestDirectPhotoSolid) + ")");
     runSynthesize(*job);
     std::cout << job->output << ": " << job->synthesis.size << "^3 voxels by " << *method << '\n';
     return 0;

@@ -27,6 +27,7 @@
 #include "particleSolid/makeParticleSolid.h"
 #include "particleSolid/particleSolidReport.h"
 #include "pipeline/compareJob.h"
+#include "pipeline/growSolidJob.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
@@ -331,6 +332,29 @@ DenseVolume volumeOf(const py::array& array) {
   return volume;
 }
 
+py::dict photoGrowth(const cv::Mat& exemplar, GrowOptions options, bool measure, bool progress) {
+  const Dims dims = options.volume.dims;
+  GrowResult result;
+  nlohmann::json report;
+  runReleased([&] {
+    planGrowthMemory(options);
+    ProgressLine line(progress);
+    options.progress = [&line](const std::string& step, double fraction) {
+      line.update(step, fraction);
+      checkInterruption();
+    };
+    result = growSolid(exemplar, options);
+    line.done();
+    std::optional<ContinuousQuality> quality;
+    if (measure) quality = measureGrownSolid(result.volume, exemplar, {});
+    report = grownSolidReport(options, result, quality ? &*quality : nullptr, {});
+  });
+  py::dict arrays;
+  arrays["color"] = ownedArray(interleaved(std::move(result.volume.color)), {dims.z, dims.y, dims.x, 3});
+  arrays["report"] = toPython(report);
+  return arrays;
+}
+
 py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywords& keywords) {
   SynthesisOptions options;
   runParsing([&] {
@@ -350,8 +374,24 @@ py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywor
   const std::optional<std::string> control = keywords.path("control");
   const bool measure = keywords.flag("measure").value_or(true),
              progress = keywords.flag("progress").value_or(false);
+  const std::optional<std::int64_t> growFrom = keywords.integer("grow_from"),
+                                    bricks = keywords.integer("bricks");
+  const std::optional<std::vector<int>> dims = keywords.integers("dims", 3);
   keywords.finish();
   options.exemplarName = std::filesystem::path(name).filename().string();
+  const Dims out =
+      dims ? Dims{(*dims)[0], (*dims)[1], (*dims)[2]} : Dims{options.size, options.size, options.size};
+  const std::optional<int> asked = growFrom ? std::optional<int>(int(*growFrom)) : std::nullopt;
+  if (const int seedEdge = growSeedEdge(asked, dims.has_value(), out); seedEdge > 0) {
+    GrowOptions grow;
+    grow.seed = options;
+    grow.seed.size = seedEdge;
+    grow.volume.dims = out;
+    grow.volume.seed = options.seed;
+    grow.volume.threads = options.threads;
+    grow.brickEdge = int(bricks.value_or(0));
+    return photoGrowth(exemplar, grow, measure, progress);
+  }
   SynthesisResult result;
   nlohmann::json report;
   runReleased([&] {

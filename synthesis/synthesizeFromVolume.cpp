@@ -89,10 +89,6 @@ struct LevelPlan {
 
 int ceilDiv(int a, int b) { return (a + b - 1) / b; }
 
-// A corrected voxel reads voxels up to 2 away, 8 subpasses a pass, each on values the earlier ones
-// wrote: wrong values at a window's edge travel at most this far inwards during a level.
-int correctionReach(int corrections) { return corrections * 8 * 2; }
-
 // Halvings from the output to the coarsest level. Without --periodic the coarsest level is one voxel
 // (a level covers ceil(side / h) voxels). A periodic level must be tiled exactly by the next finer
 // one, so its pyramid stops where a side would stop being whole.
@@ -131,7 +127,7 @@ std::vector<LevelPlan> planLevels(const VolumeSynthesisOptions& o, const Box& re
                   ceilDiv(o.dims.z, level.spacing)};
     const int finestFirst = top - l;
     level.appearance = finestFirst < corrected ? finestFirst : -1;
-    const int margin = level.appearance >= 0 ? correctionReach(o.corrections) : 0;
+    const int margin = level.appearance >= 0 ? correctionMargin(o.corrections) : 0;
     Box& w = level.window;
     widen(need.lo.x, need.hi.x, margin, level.dims.x, o.periodic, w.lo.x, w.hi.x, level.wraps[0]);
     widen(need.lo.y, need.hi.y, margin, level.dims.y, o.periodic, w.lo.y, w.hi.y, level.wraps[1]);
@@ -448,66 +444,108 @@ void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const Den
 
 }  // namespace
 
-VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
+struct VolumeSynthesizer::Analysis {
+  DenseVolume exemplar;
+  VolumeSynthesisOptions options;
+  ExemplarDomain domain;
+  int corrected = 0;
+  std::vector<AppearanceLevel> appearance;      // finest first
+  std::vector<VolumeLevelStatistics> analysed;  // the analysis figures, finest first
+  double seconds = 0;
+};
+
+VolumeSynthesizer::VolumeSynthesizer(const DenseVolume& exemplar, const VolumeSynthesisOptions& o)
+    : analysis_(std::make_unique<Analysis>()) {
   const auto start = std::chrono::steady_clock::now();
   checkOptions(exemplar, o);
   const ThreadLimit threadLimit(o.threads);
-  const ExemplarDomain domain = synthesis::detail::exemplarDomain(exemplar.dims, o.window);
-  const int allowed = correctableLevels(domain, o.window);
+  Analysis& a = *analysis_;
+  a.exemplar = exemplar;
+  a.options = o;
+  a.options.region.reset();
+  a.domain = synthesis::detail::exemplarDomain(exemplar.dims, o.window);
+  const int allowed = correctableLevels(a.domain, o.window);
   if (o.levels > allowed)
     throw OptionError("--levels " + std::to_string(o.levels) + " is more than this exemplar allows (" +
                       std::to_string(allowed) + ": each level's " + std::to_string(o.window) +
                       "^3 window times its spacing must fit in half the exemplar)");
-  const int corrected = o.levels > 0 ? o.levels : allowed;
-  checkPeriodicSize(o, corrected);
+  a.corrected = o.levels > 0 ? o.levels : allowed;
+  checkPeriodicSize(o, a.corrected);
+  const synthesis::detail::AppearanceOptions appearanceOptions{o.window, o.pcaDims, o.k, o.exclusion};
+  a.appearance.resize(std::size_t(a.corrected));
+  a.analysed.resize(std::size_t(a.corrected));
+  // Coarsest first, as the synthesis needs them; a large exemplar's analysis takes a while: say so.
+  for (int level = a.corrected - 1; level >= 0; --level) {
+    if (o.progress)
+      o.progress("analysing the exemplar (" + std::to_string(a.corrected - level) + "/" +
+                     std::to_string(a.corrected) + ")",
+                 -1);
+    const auto levelStart = std::chrono::steady_clock::now();
+    AppearanceLevel& appearance = a.appearance[std::size_t(level)];
+    appearance = synthesis::detail::buildAppearanceLevel(a.exemplar, a.domain, 1 << level, appearanceOptions);
+    VolumeLevelStatistics& stats = a.analysed[std::size_t(level)];
+    stats.appearanceDims = appearance.dims;
+    stats.keptVariance = appearance.keptVariance;
+    stats.similarityFallbackShare = appearance.excludedFallbackShare;
+    stats.analysisSeconds = secondsSince(levelStart);
+  }
+  a.seconds = secondsSince(start);
+}
+
+VolumeSynthesizer::~VolumeSynthesizer() = default;
+VolumeSynthesizer::VolumeSynthesizer(VolumeSynthesizer&&) noexcept = default;
+VolumeSynthesizer& VolumeSynthesizer::operator=(VolumeSynthesizer&&) noexcept = default;
+
+std::size_t VolumeSynthesizer::finestWindowVoxels(const Box& box) const {
+  return planLevels(analysis_->options, box, analysis_->corrected).back().window.dims().count();
+}
+
+VolumeSynthesisResult VolumeSynthesizer::synthesize(const Box& box) const {
+  const auto start = std::chrono::steady_clock::now();
+  const Analysis& a = *analysis_;
+  const VolumeSynthesisOptions& o = a.options;
+  VolumeSynthesisOptions checked = o;
+  checked.region = box;
+  checkOptions(a.exemplar, checked);
+  const ThreadLimit threadLimit(o.threads);
 
   VolumeSynthesisResult result;
-  result.box = o.region.value_or(Box::of(o.dims));
-  result.statistics.domain = domain.size;
-  const std::vector<LevelPlan> plan = planLevels(o, result.box, corrected);
-
-  synthesis::detail::AppearanceOptions appearanceOptions{o.window, o.pcaDims, o.k, o.exclusion};
-  std::vector<AppearanceLevel> appearance(static_cast<std::size_t>(corrected));
+  result.box = box;
+  result.statistics.domain = a.domain.size;
+  result.statistics.analysisSeconds = a.seconds;
+  const std::vector<LevelPlan> plan = planLevels(o, box, a.corrected);
   std::unique_ptr<CoordinateGrid> grid;
   for (std::size_t l = 0; l < plan.size(); ++l) {
     const LevelPlan& level = plan[l];
-    VolumeLevelStatistics stats;
+    VolumeLevelStatistics stats =
+        level.appearance >= 0 ? a.analysed[std::size_t(level.appearance)] : VolumeLevelStatistics{};
     stats.spacing = level.spacing;
     stats.synthesised = level.window.dims();
     stats.corrected = level.appearance >= 0;
-    const auto levelVoxels = [&](int j) { return plan[std::size_t(j)].window.dims().count(); };
-    const std::string levelName = "level " + std::to_string(l + 1) + "/" + std::to_string(plan.size());
-    if (level.appearance >= 0) {
-      // A large exemplar's analysis takes a while before the level's first voxel: say so.
-      if (o.progress)
-        o.progress(levelName + ": analysing the exemplar",
-                   pyramidFraction(int(plan.size()), int(l), -1, 1, levelVoxels));
-      const auto analysisStart = std::chrono::steady_clock::now();
-      AppearanceLevel& a = appearance[std::size_t(level.appearance)];
-      a = synthesis::detail::buildAppearanceLevel(exemplar, domain, level.spacing, appearanceOptions);
-      stats.appearanceDims = a.dims;
-      stats.keptVariance = a.keptVariance;
-      stats.similarityFallbackShare = a.excludedFallbackShare;
-      stats.analysisSeconds = secondsSince(analysisStart);
-      result.statistics.analysisSeconds += stats.analysisSeconds;
-    }
     const auto levelStart = std::chrono::steady_clock::now();
-    auto next = std::make_unique<CoordinateGrid>(upsample(grid.get(), domain, o, level, int(l)));
+    auto next = std::make_unique<CoordinateGrid>(upsample(grid.get(), a.domain, o, level, int(l)));
     if (level.appearance >= 0) {
-      const Corrector corrector{domain, appearance[std::size_t(level.appearance)], o, level};
+      const Corrector corrector{a.domain, a.appearance[std::size_t(level.appearance)], o, level};
       for (int pass = 0; pass < o.corrections; ++pass) correctionPass(*next, corrector);
     }
     grid = std::move(next);
     stats.seconds = secondsSince(levelStart);
     result.statistics.levels.push_back(stats);
-    if (o.progress)
-      o.progress(levelName + " (spacing " + std::to_string(level.spacing) +
-                     (stats.corrected ? ", corrected" : "") + ")",
+    if (o.progress) {
+      const auto levelVoxels = [&](int j) { return plan[std::size_t(j)].window.dims().count(); };
+      o.progress("level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) + " (spacing " +
+                     std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")",
                  pyramidFraction(int(plan.size()), int(l), 0, 1, levelVoxels));
+    }
   }
-  copyOut(*grid, domain, exemplar, result);
-  result.statistics.seconds = secondsSince(start);
+  copyOut(*grid, a.domain, a.exemplar, result);
+  result.statistics.seconds = a.seconds + secondsSince(start);
   return result;
+}
+
+VolumeSynthesisResult synthesizeFromVolume(const DenseVolume& exemplar, const VolumeSynthesisOptions& o) {
+  const VolumeSynthesizer synthesizer(exemplar, o);
+  return synthesizer.synthesize(o.region.value_or(Box::of(o.dims)));
 }
 
 }  // namespace solidtex

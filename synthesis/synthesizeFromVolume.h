@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,11 @@ struct VolumeSynthesisOptions {
   Progress progress;  ///< after every level, when set
 };
 
+/// Voxels beyond a box's faces that synthesising the box corrects at each corrected level: a
+/// corrected voxel reads voxels up to 2 away in each of a pass's 8 subpasses, so a wrong value at a
+/// window's edge travels at most this far inwards during a level.
+constexpr int correctionMargin(int corrections) { return corrections * 8 * 2; }
+
 /// One pyramid level, coarsest first.
 struct VolumeLevelStatistics {
   int spacing = 1;   ///< exemplar voxels per output voxel step (h_l)
@@ -63,6 +69,27 @@ struct VolumeSynthesisResult {
   DenseVolume values;                        ///< the exemplar's channels, box.dims()
   std::vector<std::array<float, 3>> source;  ///< exemplar voxel copied, per voxel
   VolumeSynthesisStatistics statistics;
+};
+
+/// A volume exemplar analysed once (appearance vectors and similarity sets of every corrected
+/// level) for one output: any box of it can then be synthesised, and equals that box of the whole
+/// volume, so the bricks of a large volume share one analysis. `options.region` is not used.
+class VolumeSynthesizer {
+public:
+  /// Checks the options and analyses the exemplar; throws InputError or OptionError with one line.
+  VolumeSynthesizer(const DenseVolume& exemplar, const VolumeSynthesisOptions& options);
+  ~VolumeSynthesizer();
+  VolumeSynthesizer(VolumeSynthesizer&&) noexcept;
+  VolumeSynthesizer& operator=(VolumeSynthesizer&&) noexcept;
+
+  /// The box of the output (inside its dims); its statistics include the analysis.
+  VolumeSynthesisResult synthesize(const Box& box) const;
+  /// Output voxels the synthesis of `box` works on at the finest level (the box and its margin).
+  std::size_t finestWindowVoxels(const Box& box) const;
+
+private:
+  struct Analysis;
+  std::unique_ptr<Analysis> analysis_;
 };
 
 /// Su 2008 solid synthesis from a volume exemplar: appearance-space pyramid synthesis on exemplar

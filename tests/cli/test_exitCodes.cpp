@@ -135,6 +135,41 @@ TEST(ExitCodes, VolumeExemplarsRefuseWhatTheyCannotUse) {
   expectRefused({"synthesize " + shellWord(dir / "missing.vdb") + out}, 1, dir);
 }
 
+TEST(ExitCodes, GrownSolidsRefuseWhatTheyCannotUse) {
+  const fs::path dir = emptyFolder("grown");
+  const std::string ct = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "volumes" / "ct_stent_64.vdb");
+  const std::string out = " -o " + shellWord(dir / "a.vdb") + " --report " + shellWord(dir / "r.json");
+  expectRefused({"synthesize " + kPhoto + out + " --bricks 16",  // a 64^3 solid is not grown
+                 "synthesize " + kPhoto + out + " --grow-from 300",
+                 "synthesize " + kPhoto + out + " --dims 40 36 30 --region 0 0 0 4 4 4",
+                 "synthesize " + kPhoto + out + " --dims 40 36 30 --bricks -4",
+                 "synthesize " + ct + out + " --grow-from 32"},
+                2, dir);
+}
+
+// --dims grows a photo's solid; bricks change the memory it takes, not the volume (the file's
+// command line says which were used).
+TEST(ExitCodes, GrownSolidsAreTheSameInBricks) {
+  const fs::path dir = emptyFolder("grown_success");
+  const std::string terra = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "continuous" / "terra.png");
+  std::vector<solidtex::SolidVolume> solids;
+  for (const int edge : {0, 24}) {
+    const fs::path output = dir / (std::to_string(edge) + ".vdb");
+    const Outcome outcome =
+        runSolidtex("synthesize " + terra + " --grow-from 32 --dims 100 20 18 --corrections 1 --bricks " +
+                    std::to_string(edge) + " -o " + shellWord(output) + " --report " +
+                    shellWord(dir / "r.json") + " --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.out;
+    solids.push_back(solidtex::readVdb(output.string()));
+  }
+  EXPECT_EQ(solids[0].dims, (solidtex::Dims{100, 20, 18}));
+  EXPECT_EQ(solids[0].color.size(), solids[0].dims.count());
+  EXPECT_TRUE(solids[0].color == solids[1].color);
+  const std::string report = readFile(dir / "r.json");
+  EXPECT_NE(report.find("\"method\": \"grown\""), std::string::npos);
+  EXPECT_NE(report.find("\"bricks\": 5"), std::string::npos);
+}
+
 TEST(ExitCodes, VolumeSynthesisIsTheSameAtAnyThreadCountAndKeepsTheDensityGrid) {
   const fs::path dir = emptyFolder("volume_success");
   const std::string ct = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "volumes" / "ct_stent_64.vdb");

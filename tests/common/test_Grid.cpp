@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "common/Error.h"
 #include "common/Grid.h"
+#include "common/bricksOf.h"
 #include "common/memoryBudget.h"
 
 namespace solidtex {
@@ -26,6 +29,22 @@ TEST(Dims, CountsAndIndexesPast32Bits) {
 TEST(Dims, VolumesBeyond32BitIndicesAreRefusedUpFront) {
   EXPECT_THROW(requireVolumeBytes("the volume", {2048, 2048, 1025}, 1.0), OptionError);
   EXPECT_NO_THROW(requireVolumeBytes("the volume", {2048, 2048, 520}, 1.0));  // 2.18 G voxels
+}
+
+TEST(Bricks, TileTheVolumeOnceInAFixedOrder) {
+  const Dims dims{10, 7, 5};
+  const std::vector<Box> bricks = bricksOf(dims, 4);
+  ASSERT_EQ(bricks.size(), 3u * 2u * 2u);
+  EXPECT_EQ(bricks[0], (Box{{0, 0, 0}, {4, 4, 4}}));
+  EXPECT_EQ(bricks[1], (Box{{4, 0, 0}, {8, 4, 4}}));
+  EXPECT_EQ(bricks.back(), (Box{{8, 4, 4}, {10, 7, 5}}));
+  std::vector<int> covered(dims.count(), 0);
+  for (const Box& b : bricks)
+    for (int z = b.lo.z; z < b.hi.z; ++z)
+      for (int y = b.lo.y; y < b.hi.y; ++y)
+        for (int x = b.lo.x; x < b.hi.x; ++x) ++covered[dims.index(x, y, z)];
+  EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+  EXPECT_EQ(bricksOf(dims, 0), std::vector<Box>{Box::of(dims)});
 }
 
 }  // namespace

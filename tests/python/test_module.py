@@ -153,6 +153,20 @@ class SynthesizeTest(unittest.TestCase):
         self.assertEqual(comparison["mode"], "continuous")
         self.assertEqual(comparison["dims"], [32, 32, 32])
 
+    def test_a_grown_photo_solid_gives_the_command_lines_bytes(self):
+        photo = np.asarray(Image.open(COINS).convert("RGB"))[:48, :48].copy()
+        growth = ["--grow-from", "32", "--dims", "40", "20", "18"]
+        with tempfile.TemporaryDirectory() as folder:
+            png, npy = os.path.join(folder, "crop.png"), os.path.join(folder, "npy")
+            Image.fromarray(photo).save(png)
+            run = cli("synthesize", png, "-o", os.path.join(folder, "s.vdb"), *growth, "--no-quality",
+                      "--npy", npy, "--quiet")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            made = solidtex.synthesize(photo, grow_from=32, dims=(40, 20, 18), bricks=24, measure=False)
+            self.assertEqual(made["color"].shape, (18, 20, 40, 3))
+            self.assertEqual(np.load(os.path.join(npy, "color.npy")).tobytes(), made["color"].tobytes())
+        self.assertEqual(made["report"]["growth"]["bricks"], 2)
+
 
 class KeywordsTest(unittest.TestCase):
     def test_a_keyword_of_the_wrong_type_is_a_type_error_naming_it(self):

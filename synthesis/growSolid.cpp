@@ -1,0 +1,73 @@
+#include "synthesis/growSolid.h"
+
+#include <chrono>
+#include <string>
+
+#include <tbb/parallel_for.h>
+
+#include "common/bricksOf.h"
+#include "common/secondsSince.h"
+
+namespace solidtex {
+namespace {
+
+DenseVolume colorExemplar(const SolidVolume& solid) {
+  DenseVolume exemplar{solid.dims, 3, std::vector<float>(solid.color.size() * 3)};
+  for (std::size_t i = 0; i < solid.color.size(); ++i)
+    std::copy_n(solid.color[i].data(), 3, &exemplar.values[3 * i]);
+  return exemplar;
+}
+
+void copyBrick(const VolumeSynthesisResult& brick, SolidVolume& volume) {
+  const Box& box = brick.box;
+  const Dims d = box.dims();
+  tbb::parallel_for(0, d.z, [&](int k) {
+    for (int j = 0; j < d.y; ++j)
+      for (int i = 0; i < d.x; ++i) {
+        const float* c = brick.values.at(i, j, k);
+        volume.color[volume.dims.index(box.lo.x + i, box.lo.y + j, box.lo.z + k)] = {c[0], c[1], c[2]};
+      }
+  });
+}
+
+}  // namespace
+
+GrowResult growSolid(const cv::Mat& photoSrgb, const GrowOptions& o) {
+  GrowResult result;
+  SynthesisOptions seedOptions = o.seed;
+  seedOptions.seed = o.volume.seed;
+  seedOptions.threads = o.volume.threads;
+  if (o.progress)
+    seedOptions.progress = [&](const std::string& step, double) { o.progress("seed solid: " + step, -1); };
+  SynthesisResult seed = synthesizeSolid(photoSrgb, seedOptions);
+  result.seed = seed.statistics;
+
+  const std::vector<Box> bricks = bricksOf(o.volume.dims, o.brickEdge);
+  std::size_t current = 0;  // the brick being synthesised, for the share done
+  VolumeSynthesisOptions volumeOptions = o.volume;
+  volumeOptions.region.reset();
+  if (o.progress)
+    volumeOptions.progress = [&](const std::string& step, double fraction) {
+      if (!(fraction >= 0)) return o.progress("growing: " + step, -1);  // the analysis
+      o.progress("brick " + std::to_string(current + 1) + "/" + std::to_string(bricks.size()) + ", " + step,
+                 (double(current) + fraction) / double(bricks.size()));
+    };
+  const VolumeSynthesizer synthesizer(colorExemplar(seed.volume), volumeOptions);
+  seed = {};
+
+  result.volume.dims = o.volume.dims;
+  result.volume.color.resize(o.volume.dims.count());
+  const auto start = std::chrono::steady_clock::now();
+  for (; current < bricks.size(); ++current) {
+    const VolumeSynthesisResult brick = synthesizer.synthesize(bricks[current]);
+    copyBrick(brick, result.volume);
+    result.finestVoxels += synthesizer.finestWindowVoxels(bricks[current]);
+    result.analysisSeconds = brick.statistics.analysisSeconds;
+    result.seedDomain = brick.statistics.domain;
+  }
+  result.growthSeconds = secondsSince(start);
+  result.bricks = bricks.size();
+  return result;
+}
+
+}  // namespace solidtex
