@@ -4,7 +4,7 @@
 # reference. Prints a Markdown table: the result's bidirectional similarity and patch distance over
 # the reference's (2D: the texture; solids: axis and oblique slices), wall time and peak memory.
 # Usage: bench/reference_table.sh SIZE METHODS PHOTO.png...
-#   METHODS: comma list of solid methods (chen-wang, kopf, skeletal, and grown: a 64^3 chen-wang solid grown
+#   METHODS: comma list of solid methods (chen-wang, kopf, skeletal, and grown: a GROW_FROM^3 (default 128) chen-wang solid grown
 #   to GROWN_SIZE^3, default 2 x SIZE, by volume synthesis) and 2D ones (2d-kwatra, 2d-skeletal),
 #   each optionally with +wavelet for --distance wavelet (e.g. 2d-skeletal+wavelet);
 #   SIZE: the quarters' side, the texture's side and the solid's edge. Run from the repo root after building.
@@ -32,7 +32,7 @@ for photo in "$@"; do
           ${EXTRA_2D:-} --distance "$distance" --reference "$out/reference.png" --report "$out/s.json" --quiet > /dev/null
         cp "$out/s.json" "$out/c.json" ;;
       grown)
-        "$bin" synthesize "$out/exemplar.png" -o "$out/v.vdb" --size "${GROWN_SIZE:-$((2 * size))}" --grow-from 64 \
+        "$bin" synthesize "$out/exemplar.png" -o "$out/v.vdb" --size "${GROWN_SIZE:-$((2 * size))}" --grow-from "${GROW_FROM:-128}" \
           --report "$out/s.json" --quiet > /dev/null
         "$bin" compare "$out/exemplar.png" "$out/v.vdb" --reference "$out/reference.png" --report "$out/c.json" > /dev/null ;;
       *)

@@ -16,8 +16,9 @@ inline std::vector<Box> bricksOf(const Dims& dims, int edge) {
   for (int z = 0; z < dims.z; z += edge)
     for (int y = 0; y < dims.y; y += edge)
       for (int x = 0; x < dims.x; x += edge)
-        bricks.push_back({{x, y, z}, {std::min(x + edge, dims.x), std::min(y + edge, dims.y),
-                                      std::min(z + edge, dims.z)}});
+        bricks.push_back(
+            {{x, y, z},
+             {std::min(x + edge, dims.x), std::min(y + edge, dims.y), std::min(z + edge, dims.z)}});
   return bricks;
 }
 

@@ -63,7 +63,8 @@ nlohmann::json growthReport(const GrowOptions& o, const GrowResult& r) {
 }  // namespace
 
 double growPeakBytes(const Dims& dims, int edge, int margin) {
-  const Dims brick = edge <= 0 ? dims : Dims{std::min(edge, dims.x), std::min(edge, dims.y), std::min(edge, dims.z)};
+  const Dims brick =
+      edge <= 0 ? dims : Dims{std::min(edge, dims.x), std::min(edge, dims.y), std::min(edge, dims.z)};
   const Dims window{std::min(brick.x + 2 * margin, dims.x), std::min(brick.y + 2 * margin, dims.y),
                     std::min(brick.z + 2 * margin, dims.z)};
   return kBaseBytes + kOutputBytesPerVoxel * voxels(dims) + kWindowBytesPerVoxel * voxels(window) +
@@ -97,7 +98,8 @@ ContinuousQuality measureGrownSolid(const SolidVolume& volume, const cv::Mat& ph
 }
 
 nlohmann::json grownSolidReport(const GrowOptions& options, const GrowResult& result,
-                                const ContinuousQuality* quality, const ContinuousQualityOptions& qualityOptions) {
+                                const ContinuousQuality* quality,
+                                const ContinuousQualityOptions& qualityOptions) {
   SynthesisOptions seedOptions = options.seed;
   seedOptions.seed = options.volume.seed;
   const Dims& dims = options.volume.dims;
@@ -107,7 +109,8 @@ nlohmann::json grownSolidReport(const GrowOptions& options, const GrowResult& re
                            {"dims", {dims.x, dims.y, dims.z}},
                            {"seed", options.volume.seed},
                            {"seed_solid", synthesisReport(seedOptions, result.seed)},
-                           {"growth", growthReport(options, result)}};
+                           {"growth", growthReport(options, result)},
+                           {"seconds", result.seed.seconds + result.analysisSeconds + result.growthSeconds}};
   if (quality) {
     report["quality"] = continuousQualityJson(*quality, qualityOptions);
     report["quality"]["measured_voxels"] = {std::min(dims.x, kMeasuredSide), std::min(dims.y, kMeasuredSide),
@@ -134,10 +137,10 @@ nlohmann::json runGrowSolid(const GrowSolidJob& job) {
   progress.done();
 
   SolidVolume& volume = result.volume;
-  volume.metadata = {{"solidtex_version", SOLIDTEX_VERSION},
-                     {"command_line", job.commandLine},
-                     {"seed", std::to_string(options.volume.seed)},
-                     {"exemplar", options.seed.exemplarName}};
+  volume.metadata["solidtex_version"] = SOLIDTEX_VERSION;
+  volume.metadata["command_line"] = job.commandLine;
+  volume.metadata["seed"] = std::to_string(options.volume.seed);
+  volume.metadata["exemplar"] = options.seed.exemplarName;
   std::optional<ContinuousQuality> quality;
   if (job.measure) {
     progress.update("measuring the slices against the exemplar");

@@ -29,7 +29,7 @@ struct GrowSolidJob {
 /// 256^3 and its memory grows with the volume.
 inline constexpr int kLargestDirectPhotoSolid = 256;
 /// The seed solid's edge when growing is not asked for by --grow-from.
-inline constexpr int kDefaultGrowSeed = 64;
+inline constexpr int kDefaultGrowSeed = 128;
 
 /// The seed edge a photo solid is grown from: `growFrom` when given (0: not grown), else
 /// kDefaultGrowSeed when the output is given by its dims or is larger than kLargestDirectPhotoSolid
@@ -55,7 +55,8 @@ ContinuousQuality measureGrownSolid(const SolidVolume& volume, const cv::Mat& ph
 /// The report of a growth: the seed solid's synthesis, the growth's options, bricks and timings,
 /// and the quality when measured (no outputs or memory).
 nlohmann::json grownSolidReport(const GrowOptions& options, const GrowResult& result,
-                                const ContinuousQuality* quality, const ContinuousQualityOptions& qualityOptions);
+                                const ContinuousQuality* quality,
+                                const ContinuousQualityOptions& qualityOptions);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runGrowSolid(const GrowSolidJob& job);

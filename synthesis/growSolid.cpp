@@ -57,6 +57,7 @@ GrowResult growSolid(const cv::Mat& photoSrgb, const GrowOptions& o) {
 
   result.volume.dims = o.volume.dims;
   result.volume.color.resize(o.volume.dims.count());
+  result.volume.metadata["method"] = "grown from " + methodName(o.seed.method);
   const auto start = std::chrono::steady_clock::now();
   for (; current < bricks.size(); ++current) {
     const VolumeSynthesisResult brick = synthesizer.synthesize(bricks[current]);

@@ -165,6 +165,7 @@ TEST(ExitCodes, GrownSolidsAreTheSameInBricks) {
   EXPECT_EQ(solids[0].dims, (solidtex::Dims{100, 20, 18}));
   EXPECT_EQ(solids[0].color.size(), solids[0].dims.count());
   EXPECT_TRUE(solids[0].color == solids[1].color);
+  EXPECT_EQ(solids[0].metadata.at("method"), "grown from chen-wang");
   const std::string report = readFile(dir / "r.json");
   EXPECT_NE(report.find("\"method\": \"grown\""), std::string::npos);
   EXPECT_NE(report.find("\"bricks\": 5"), std::string::npos);

@@ -39,7 +39,8 @@ TEST(GrowSolid, IsTheSeedSolidGrownByVolumeSynthesis) {
   ASSERT_EQ(result.volume.dims, o.volume.dims);
   ASSERT_EQ(result.volume.color.size() * 3, expected.values.values.size());
   for (std::size_t i = 0; i < result.volume.color.size(); ++i)
-    for (std::size_t c = 0; c < 3; ++c) ASSERT_EQ(result.volume.color[i][c], expected.values.values[3 * i + c]);
+    for (std::size_t c = 0; c < 3; ++c)
+      ASSERT_EQ(result.volume.color[i][c], expected.values.values[3 * i + c]);
   EXPECT_EQ(result.bricks, 1u);
   EXPECT_EQ(result.finestVoxels, o.volume.dims.count());
 }
