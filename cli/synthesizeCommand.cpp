@@ -155,7 +155,7 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
                        std::to_string(kLargestDirectPhotoSolid) + " or with --dims; 0: never)")
       ->check(CLI::Range(0, 256));
   command->add_option("--bricks", *brickEdge,
-                      "Grown solids: synthesise bricks of this edge one at a time (same bytes, less "
+                      "Grown solids: synthesise bricks of this edge one at a time (same voxels, less "
                       "memory; default: the whole volume when it fits in memory)");
   for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
                            "--similarity-search", "--iterations", "--control", "--grow-from", "--bricks"})

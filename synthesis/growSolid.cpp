@@ -1,5 +1,6 @@
 #include "synthesis/growSolid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
