@@ -8,6 +8,27 @@
 
 namespace solidtex {
 
+namespace {
+
+std::string timeLeftText(double secondsLeft) {
+  const long seconds = std::lround(secondsLeft);
+  char left[48];
+  if (seconds >= 3600)
+    std::snprintf(left, sizeof left, "%ldh %02ldm left", seconds / 3600, seconds / 60 % 60);
+  else if (seconds >= 60)
+    std::snprintf(left, sizeof left, "%ldm %02lds left", seconds / 60, seconds % 60);
+  else
+    std::snprintf(left, sizeof left, "%lds left", seconds);
+  return left;
+}
+
+}  // namespace
+
+std::string shareText(double fraction, double secondsLeft) {
+  const std::string percent = std::to_string(int(std::clamp(fraction, 0.0, 1.0) * 100)) + "%";
+  return secondsLeft >= 0 ? percent + ", " + timeLeftText(secondsLeft) : percent;
+}
+
 std::string progressText(const std::string& step, double fraction, double secondsLeft) {
   if (!(fraction >= 0)) return step;  // unknown, or NaN
   constexpr int kBarWidth = 24;
@@ -17,43 +38,41 @@ std::string progressText(const std::string& step, double fraction, double second
   std::snprintf(percent, sizeof percent, "%3d%%", int(fraction * 100));
   std::string text = step + " [" + std::string(std::size_t(filled), '#') +
                      std::string(std::size_t(kBarWidth - filled), '-') + "] " + percent;
-  if (secondsLeft >= 0) {
-    const long seconds = std::lround(secondsLeft);
-    char left[48];
-    if (seconds >= 3600)
-      std::snprintf(left, sizeof left, " %ldh %02ldm left", seconds / 3600, seconds / 60 % 60);
-    else if (seconds >= 60)
-      std::snprintf(left, sizeof left, " %ldm %02lds left", seconds / 60, seconds % 60);
-    else
-      std::snprintf(left, sizeof left, " %lds left", seconds);
-    text += left;
+  return secondsLeft >= 0 ? text + " " + timeLeftText(secondsLeft) : text;
+}
+
+double TimeLeftEstimate::update(double seconds, double fraction) {
+  if (!(fraction >= 0)) return -1;
+  if (!started_ || fraction < lastFraction_) {
+    started_ = true;
+    startSeconds_ = seconds;
+    startFraction_ = fraction;
   }
-  return text;
+  lastFraction_ = fraction;
+  const double elapsed = seconds - startSeconds_, gained = fraction - startFraction_;
+  return gained > 0.01 && elapsed > 2 ? elapsed * std::max(0.0, 1 - fraction) / gained : -1;
 }
 
 void ProgressLine::update(const std::string& step, double fraction) {
   if (!enabled_) return;
   const auto now = Clock::now();
-  if (fraction >= 0 && !firstFraction_) {
-    firstFraction_ = now;
-    fractionAtFirst_ = fraction;
-  }
-  const bool terminal = isatty(STDERR_FILENO);
-  // A log gets a line with a percentage every ten seconds at most, and nothing for a step without
-  // one (a quick failure stays one line); a terminal sees the line rewritten ten times a second.
-  if (!terminal && !(fraction >= 0)) return;
+  const double left = timeLeft_.update(std::chrono::duration<double>(now - origin_).count(), fraction);
+  const bool terminal = isatty(STDERR_FILENO), shared = fraction >= 0;
+  // A log gets a line every ten seconds at most, with the percentage and the time left; a step
+  // without a share shows only once the run has gone ten seconds without a line (a quick run or
+  // failure stays quiet). A terminal sees the line rewritten ten times a second.
   const auto interval = terminal ? std::chrono::milliseconds(100) : std::chrono::milliseconds(10000);
-  if (started_ && fraction >= 0 && now - last_ < interval) return;  // a new step always shows
+  if (!terminal && !shared && now - (started_ ? last_ : origin_) < interval) return;
+  if (started_ && shared && now - last_ < interval) return;  // a new step always shows
   started_ = true;
   last_ = now;
   if (!terminal) {
-    std::fprintf(stderr, "%s (%d%%)\n", step.c_str(), int(std::min(fraction, 1.0) * 100));
+    if (shared)
+      std::fprintf(stderr, "%s (%s)\n", step.c_str(), shareText(fraction, left).c_str());
+    else
+      std::fprintf(stderr, "%s\n", step.c_str());
     return;
   }
-  // The rate so far, once there is enough of it to go by, gives the time left.
-  const double elapsed = firstFraction_ ? std::chrono::duration<double>(now - *firstFraction_).count() : 0;
-  const double gained = fraction - fractionAtFirst_;
-  const double left = gained > 0.01 && elapsed > 2 ? elapsed * (1 - fraction) / gained : -1;
   std::fprintf(stderr, "\r\033[K%s", progressText(step, fraction, left).c_str());
   dirty_ = true;
 }
@@ -66,7 +85,7 @@ ProgressLine::~ProgressLine() {
 void ProgressLine::done() {
   if (dirty_) std::fputc('\n', stderr);
   dirty_ = false;
-  firstFraction_.reset();
+  timeLeft_.restart();
 }
 
 }  // namespace solidtex

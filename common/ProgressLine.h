@@ -2,14 +2,28 @@
 /// @file ProgressLine.h
 /// @brief The progress line long work shows on stderr.
 #include <chrono>
-#include <optional>
 #include <string>
 
 namespace solidtex {
 
+/// The time left of a stage of work, from the rate of its share done so far. A share below the one
+/// before starts a new stage (the next step of a job reports its own share from 0).
+class TimeLeftEstimate {
+public:
+  /// The seconds left when `fraction` in [0, 1] is done at `seconds` (any clock); negative until
+  /// the stage has run two seconds and gained a hundredth, and for a negative fraction.
+  double update(double seconds, double fraction);
+  /// Starts a new stage at the next update.
+  void restart() { started_ = false; }
+
+private:
+  bool started_ = false;
+  double startSeconds_ = 0, startFraction_ = 0, lastFraction_ = 0;
+};
+
 /// A progress line on stderr. On a terminal it rewrites itself: the step, a bar, the share done and
-/// an estimate of the time left; in a log it prints a plain line with the percentage every ten
-/// seconds at most, and nothing for a step without one.
+/// an estimate of the time left; in a log it prints a plain line with the percentage and the time
+/// left every ten seconds at most, and a step without a share only after ten quiet seconds.
 class ProgressLine {
 public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
@@ -27,9 +41,12 @@ private:
   bool dirty_ = false;
   bool started_ = false;
   Clock::time_point last_{};
-  std::optional<Clock::time_point> firstFraction_;  ///< when the current estimate began
-  double fractionAtFirst_ = 0;                      ///< and the share done then
+  const Clock::time_point origin_ = Clock::now();
+  TimeLeftEstimate timeLeft_;
 };
+
+/// A log's progress: "42%, 1m 23s left"; the percentage alone for a negative `secondsLeft`.
+std::string shareText(double fraction, double secondsLeft);
 
 /// The terminal's progress line: "STEP [########------------] 42% 1m 23s left"; no bar for a
 /// negative fraction, no estimate for a negative `secondsLeft`.

@@ -245,7 +245,10 @@ const PlacementResult& ParticleSolidBuilder::place() {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
                   fraction, stats.areaFraction);
-    report(progress_, line, stats.areaFraction > 0 ? fraction / stats.areaFraction : -1);
+    // No share of the work: the volume fills fast with the large particles and slowly with the
+    // many small ones, whose count is not known ahead (docs/performance.md, progress), so a bar of
+    // the volume would promise a fifth of the time left.
+    report(progress_, line);
   };
   solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
   field.reset();  // placement's largest part, given back before the solid is painted

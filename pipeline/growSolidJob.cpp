@@ -17,10 +17,16 @@
 namespace solidtex {
 namespace {
 
-// Measured peaks (docs/performance.md): what every run holds, the output's colours (and the grid
-// they become, written in slabs), and per voxel of a brick's finest window and of the brick itself.
-constexpr double kBaseBytes = 200.0 * 1024 * 1024;
-constexpr double kOutputBytesPerVoxel = 13, kWindowBytesPerVoxel = 14, kBrickBytesPerVoxel = 24;
+// Measured peaks (docs/performance.md). The analysis holds the seed solid and searches each
+// level's similarity sets: 48 nearest ids and distances per domain voxel, and the features and their
+// index; it keeps 16 features and 3 similar voxels per domain voxel and level. The growth holds more
+// beside it (the writing's buffers), the output's colours (and the grid they become, written in
+// slabs), and per voxel of a brick's finest window and of the brick itself.
+constexpr double kMiB = 1024.0 * 1024;
+constexpr double kAnalysisBaseBytes = 150 * kMiB, kSearchBytesPerDomainVoxel = 578;
+constexpr double kKeptBytesPerAnalysedVoxel = 76;
+constexpr double kGrowthBaseBytes = 250 * kMiB;
+constexpr double kOutputBytesPerVoxel = 13, kWindowBytesPerVoxel = 10, kBrickBytesPerVoxel = 14;
 
 // The quality is measured on at most the central kMeasuredSide^3 box: the measure holds an sRGB copy
 // of what it reads, which the largest volumes have no room for.
@@ -62,19 +68,22 @@ nlohmann::json growthReport(const GrowOptions& o, const GrowResult& r) {
 
 }  // namespace
 
-double growPeakBytes(const Dims& dims, int edge, int margin) {
+double growPeakBytes(const Dims& dims, int edge, int margin, const VolumeAnalysisSize& seed) {
   const Dims brick =
       edge <= 0 ? dims : Dims{std::min(edge, dims.x), std::min(edge, dims.y), std::min(edge, dims.z)};
   const Dims window{std::min(brick.x + 2 * margin, dims.x), std::min(brick.y + 2 * margin, dims.y),
                     std::min(brick.z + 2 * margin, dims.z)};
-  return kBaseBytes + kOutputBytesPerVoxel * voxels(dims) + kWindowBytesPerVoxel * voxels(window) +
-         kBrickBytesPerVoxel * voxels(brick);
+  const double kept = kKeptBytesPerAnalysedVoxel * seed.levels * seed.domainVoxels;
+  // The analysis's search is over before the output is made.
+  return std::max(kAnalysisBaseBytes + kept + kSearchBytesPerDomainVoxel * seed.domainVoxels,
+                  kGrowthBaseBytes + kept + kOutputBytesPerVoxel * voxels(dims) +
+                      kWindowBytesPerVoxel * voxels(window) + kBrickBytesPerVoxel * voxels(brick));
 }
 
-int growBrickEdge(const Dims& dims, int margin, double availableBytes) {
-  if (growPeakBytes(dims, 0, margin) <= availableBytes) return 0;
+int growBrickEdge(const Dims& dims, int margin, const VolumeAnalysisSize& seed, double availableBytes) {
+  if (growPeakBytes(dims, 0, margin, seed) <= availableBytes) return 0;
   for (const int edge : {512, 256, 128})
-    if (growPeakBytes(dims, edge, margin) <= availableBytes) return edge;
+    if (growPeakBytes(dims, edge, margin, seed) <= availableBytes) return edge;
   return 64;
 }
 
@@ -86,8 +95,11 @@ int growSeedEdge(std::optional<int> growFrom, bool dimsGiven, const Dims& dims) 
 double planGrowthMemory(GrowOptions& options) {
   const Dims& dims = options.volume.dims;
   const int margin = correctionMargin(options.volume.corrections);
-  if (options.brickEdge <= 0) options.brickEdge = growBrickEdge(dims, margin, double(availableMemoryBytes()));
-  const double bytes = growPeakBytes(dims, options.brickEdge, margin);
+  const int edge = options.seed.size;
+  const VolumeAnalysisSize seed = volumeAnalysisSize({edge, edge, edge}, options.volume);
+  if (options.brickEdge <= 0)
+    options.brickEdge = growBrickEdge(dims, margin, seed, double(availableMemoryBytes()));
+  const double bytes = growPeakBytes(dims, options.brickEdge, margin, seed);
   requireVolumeBytes("growing a solid", dims, bytes);
   return bytes;
 }

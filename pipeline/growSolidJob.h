@@ -41,12 +41,13 @@ int growSeedEdge(std::optional<int> growFrom, bool dimsGiven, const Dims& dims);
 double planGrowthMemory(GrowOptions& options);
 
 /// Estimated peak bytes of growing a solid of `dims` in bricks of `edge` (0: one brick), given the
-/// synthesis's correction margin (voxels beyond a brick's faces at the finest level).
-double growPeakBytes(const Dims& dims, int edge, int margin);
+/// synthesis's correction margin (voxels beyond a brick's faces at the finest level) and the size
+/// of the seed solid's analysis.
+double growPeakBytes(const Dims& dims, int edge, int margin, const VolumeAnalysisSize& seed);
 
 /// The brick edge a growth uses when none is given: the whole volume when that fits in
 /// `availableBytes`, else the largest of 512, 256, 128 and 64 that does (64 when none does).
-int growBrickEdge(const Dims& dims, int margin, double availableBytes);
+int growBrickEdge(const Dims& dims, int margin, const VolumeAnalysisSize& seed, double availableBytes);
 
 /// The grown solid's quality against the photo, measured on at most its central 256^3 box.
 ContinuousQuality measureGrownSolid(const SolidVolume& volume, const cv::Mat& photoSrgb,

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 
@@ -39,31 +41,40 @@ GrowResult growSolid(const cv::Mat& photoSrgb, const GrowOptions& o) {
   seedOptions.seed = o.volume.seed;
   seedOptions.threads = o.volume.threads;
   if (o.progress)
-    seedOptions.progress = [&](const std::string& step, double) { o.progress("seed solid: " + step, -1); };
+    seedOptions.progress = [&](const std::string& step, double fraction) {
+      o.progress("seed solid: " + step, fraction);
+    };
   SynthesisResult seed = synthesizeSolid(photoSrgb, seedOptions);
   result.seed = seed.statistics;
 
   const std::vector<Box> bricks = bricksOf(o.volume.dims, o.brickEdge);
-  std::size_t current = 0;  // the brick being synthesised, for the share done
+  // Before the first brick, the analysis reports; then each brick's share of the growth is its
+  // finest window's share (thinner last bricks, margins cut at the volume's faces).
+  std::optional<std::size_t> current;
+  std::vector<double> windowsBefore(bricks.size() + 1, 0);
   VolumeSynthesisOptions volumeOptions = o.volume;
   volumeOptions.region.reset();
   if (o.progress)
     volumeOptions.progress = [&](const std::string& step, double fraction) {
-      if (!(fraction >= 0)) return o.progress("growing: " + step, -1);  // the analysis
-      o.progress("brick " + std::to_string(current + 1) + "/" + std::to_string(bricks.size()) + ", " + step,
-                 (double(current) + fraction) / double(bricks.size()));
+      if (!current) return o.progress("growing: " + step, fraction);
+      o.progress(
+          "brick " + std::to_string(*current + 1) + "/" + std::to_string(bricks.size()) + ", " + step,
+          (windowsBefore[*current] + fraction * (windowsBefore[*current + 1] - windowsBefore[*current])) /
+              windowsBefore.back());
     };
   const VolumeSynthesizer synthesizer(colorExemplar(seed.volume), volumeOptions);
   seed = {};
+  for (std::size_t b = 0; b < bricks.size(); ++b)
+    windowsBefore[b + 1] = windowsBefore[b] + double(synthesizer.finestWindowVoxels(bricks[b]));
 
   result.volume.dims = o.volume.dims;
   result.volume.color.resize(o.volume.dims.count());
   result.volume.metadata["method"] = "grown from " + methodName(o.seed.method);
   const auto start = std::chrono::steady_clock::now();
-  for (; current < bricks.size(); ++current) {
-    const VolumeSynthesisResult brick = synthesizer.synthesize(bricks[current]);
+  for (current = 0; *current < bricks.size(); ++*current) {
+    const VolumeSynthesisResult brick = synthesizer.synthesize(bricks[*current]);
     copyBrick(brick, result.volume);
-    result.finestVoxels += synthesizer.finestWindowVoxels(bricks[current]);
+    result.finestVoxels += synthesizer.finestWindowVoxels(bricks[*current]);
     result.analysisSeconds = brick.statistics.analysisSeconds;
     result.seedDomain = brick.statistics.domain;
   }

@@ -20,7 +20,9 @@ struct GrowOptions {
   /// threads apply to both stages.
   VolumeSynthesisOptions volume;
   int brickEdge = 0;  ///< bricks synthesised one at a time (bounded memory); 0 = the whole volume
-  Progress progress;  ///< the seed's steps without a share, then the share of bricks done
+  /// Three stages, each with its share done: the seed solid's synthesis, its analysis as a volume
+  /// exemplar, and the bricks.
+  Progress progress;
 };
 
 /// What growSolid made and how.

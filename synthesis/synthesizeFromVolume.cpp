@@ -424,6 +424,19 @@ int correctableLevels(const ExemplarDomain& domain, int window) {
   return std::max(levels, 1);
 }
 
+}  // namespace
+
+VolumeAnalysisSize volumeAnalysisSize(const Dims& exemplar, const VolumeSynthesisOptions& o) {
+  const int border = o.window / 2;
+  const ExemplarDomain domain{{exemplar.x - 2 * border, exemplar.y - 2 * border, exemplar.z - 2 * border},
+                              border};
+  if (o.window < 1 || std::min({domain.size[0], domain.size[1], domain.size[2]}) < o.window) return {};
+  const int allowed = correctableLevels(domain, o.window);
+  return {double(domain.count()), o.levels > 0 ? std::min(o.levels, allowed) : allowed};
+}
+
+namespace {
+
 void copyOut(const CoordinateGrid& grid, const ExemplarDomain& domain, const DenseVolume& exemplar,
              VolumeSynthesisResult& result) {
   const Box& box = result.box;
@@ -476,10 +489,11 @@ VolumeSynthesizer::VolumeSynthesizer(const DenseVolume& exemplar, const VolumeSy
   a.analysed.resize(std::size_t(a.corrected));
   // Coarsest first, as the synthesis needs them; a large exemplar's analysis takes a while: say so.
   for (int level = a.corrected - 1; level >= 0; --level) {
+    // Every level analyses the whole domain (at its spacing): they take about as long each.
     if (o.progress)
       o.progress("analysing the exemplar (" + std::to_string(a.corrected - level) + "/" +
                      std::to_string(a.corrected) + ")",
-                 -1);
+                 double(a.corrected - 1 - level) / a.corrected);
     const auto levelStart = std::chrono::steady_clock::now();
     AppearanceLevel& appearance = a.appearance[std::size_t(level)];
     appearance = synthesis::detail::buildAppearanceLevel(a.exemplar, a.domain, 1 << level, appearanceOptions);
@@ -514,6 +528,11 @@ VolumeSynthesisResult VolumeSynthesizer::synthesize(const Box& box) const {
   result.statistics.domain = a.domain.size;
   result.statistics.analysisSeconds = a.seconds;
   const std::vector<LevelPlan> plan = planLevels(o, box, a.corrected);
+  // The share done counts correction passes by their voxels: upsampling and jitter are cheap beside
+  // them, and the finest level's passes take most of the time.
+  double passVoxelsDone = 0, passVoxels = 0;
+  for (const LevelPlan& level : plan)
+    if (level.appearance >= 0) passVoxels += double(level.window.dims().count()) * o.corrections;
   std::unique_ptr<CoordinateGrid> grid;
   for (std::size_t l = 0; l < plan.size(); ++l) {
     const LevelPlan& level = plan[l];
@@ -524,19 +543,25 @@ VolumeSynthesisResult VolumeSynthesizer::synthesize(const Box& box) const {
     stats.corrected = level.appearance >= 0;
     const auto levelStart = std::chrono::steady_clock::now();
     auto next = std::make_unique<CoordinateGrid>(upsample(grid.get(), a.domain, o, level, int(l)));
+    const std::string name = "level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) +
+                             " (spacing " + std::to_string(level.spacing);
     if (level.appearance >= 0) {
       const Corrector corrector{a.domain, a.appearance[std::size_t(level.appearance)], o, level};
-      for (int pass = 0; pass < o.corrections; ++pass) correctionPass(*next, corrector);
+      for (int pass = 0; pass < o.corrections; ++pass) {
+        correctionPass(*next, corrector);
+        passVoxelsDone += double(level.window.dims().count());
+        if (o.progress)
+          o.progress(
+              name + ", correction " + std::to_string(pass + 1) + "/" + std::to_string(o.corrections) + ")",
+              passVoxelsDone / passVoxels);
+      }
+    }
+    if (o.progress && !(level.appearance >= 0 && o.corrections > 0)) {
+      o.progress(name + ")", passVoxels > 0 ? passVoxelsDone / passVoxels : double(l + 1) / plan.size());
     }
     grid = std::move(next);
     stats.seconds = secondsSince(levelStart);
     result.statistics.levels.push_back(stats);
-    if (o.progress) {
-      const auto levelVoxels = [&](int j) { return plan[std::size_t(j)].window.dims().count(); };
-      o.progress("level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) + " (spacing " +
-                     std::to_string(level.spacing) + (stats.corrected ? ", corrected" : "") + ")",
-                 pyramidFraction(int(plan.size()), int(l), 0, 1, levelVoxels));
-    }
   }
   copyOut(*grid, a.domain, a.exemplar, result);
   result.statistics.seconds = a.seconds + secondsSince(start);

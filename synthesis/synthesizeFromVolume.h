@@ -32,14 +32,26 @@ struct VolumeSynthesisOptions {
   /// Every side must be a multiple of 2^(corrected levels). A field is read where the wrap lands.
   bool periodic = false;
   std::uint64_t seed = 1;
-  int threads = 0;    ///< worker threads; 0 = all cores. Output does not depend on it.
-  Progress progress;  ///< after every level, when set
+  int threads = 0;  ///< worker threads; 0 = all cores. Output does not depend on it.
+  /// When set: before each analysed level, then after each correction pass and uncorrected level,
+  /// with the share of the analysis or of the synthesis done.
+  Progress progress;
 };
 
 /// Voxels beyond a box's faces that synthesising the box corrects at each corrected level: a
 /// corrected voxel reads voxels up to 2 away in each of a pass's 8 subpasses, so a wrong value at a
 /// window's edge travels at most this far inwards during a level.
 constexpr int correctionMargin(int corrections) { return corrections * 8 * 2; }
+
+/// What the analysis of an exemplar works on: every corrected level keeps appearance vectors and
+/// similarity sets for each voxel of the domain.
+struct VolumeAnalysisSize {
+  double domainVoxels = 0;  ///< the exemplar less its border (0: too small to analyse)
+  int levels = 0;           ///< corrected levels
+};
+
+/// The analysis size of an exemplar of `exemplar` voxels under `options`, without analysing it.
+VolumeAnalysisSize volumeAnalysisSize(const Dims& exemplar, const VolumeSynthesisOptions& options);
 
 /// One pyramid level, coarsest first.
 struct VolumeLevelStatistics {

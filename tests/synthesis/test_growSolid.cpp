@@ -1,3 +1,5 @@
+#include <array>
+
 #include <gtest/gtest.h>
 
 #include "TestImages.h"
@@ -57,17 +59,25 @@ TEST(GrowSolid, BricksGiveTheBytesOfTheWholeVolumeAtAnyThreadCount) {
   EXPECT_TRUE(result.volume.color == whole);
 }
 
-TEST(GrowSolid, ProgressGoesOverTheBricks) {
+// Three stages, each with its own share from 0 to 1: the seed, its analysis, the bricks.
+TEST(GrowSolid, ProgressGoesOverTheStagesAndTheBricks) {
   GrowOptions o = smallGrowth(20);
-  std::vector<double> shares;
-  int bricksNamed = 0;
-  o.progress = [&](const std::string& step, double fraction) {
-    if (fraction >= 0) shares.push_back(fraction);
-    bricksNamed += step.find("brick 5/5") != std::string::npos;
-  };
+  std::vector<std::pair<std::string, double>> steps;
+  o.progress = [&](const std::string& step, double fraction) { steps.emplace_back(step, fraction); };
   growSolid(photo(), o);
-  ASSERT_FALSE(shares.empty());
-  for (std::size_t s = 1; s < shares.size(); ++s) EXPECT_GE(shares[s], shares[s - 1]);
-  EXPECT_DOUBLE_EQ(shares.back(), 1);
-  EXPECT_GT(bricksNamed, 0);
+  const std::array<std::string, 3> stages{"seed solid: ", "growing: analysing", "brick "};
+  std::size_t s = 0;
+  for (const std::string& stage : stages) {
+    const std::size_t first = s;
+    for (; s < steps.size() && steps[s].first.starts_with(stage); ++s) {
+      EXPECT_GE(steps[s].second, 0) << steps[s].first;
+      if (s > first) {
+        EXPECT_GE(steps[s].second, steps[s - 1].second) << steps[s].first;
+      }
+    }
+    EXPECT_GT(s, first) << "no step of " << stage;
+  }
+  EXPECT_EQ(s, steps.size()) << steps[std::min(s, steps.size() - 1)].first;
+  EXPECT_NE(steps.back().first.find("brick 5/5"), std::string::npos) << steps.back().first;
+  EXPECT_DOUBLE_EQ(steps.back().second, 1);
 }

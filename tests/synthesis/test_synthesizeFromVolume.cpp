@@ -209,23 +209,30 @@ TEST(SynthesizeFromVolume, RefusesBadInput) {
   }
 }
 
-// A large exemplar's analysis takes long before any voxel is made: the first progress says so.
-TEST(SynthesizeFromVolume, ProgressSaysTheAnalysisBeforeTheLevels) {
+// A large exemplar's analysis takes long before any voxel is made: the first progress says so, with
+// its share; the synthesis's share then grows after every correction pass to 1.
+TEST(SynthesizeFromVolume, ProgressGoesOverTheAnalysisThenThePasses) {
   VolumeSynthesisOptions o = smallOptions(16);
   std::vector<std::pair<std::string, double>> steps;
   o.progress = [&](const std::string& step, double fraction) { steps.emplace_back(step, fraction); };
-  synthesizeFromVolume(layeredVolume(20, 5, 1), o);
-  // A large exemplar's analysis takes a while before the first level: each corrected level's says
-  // so first, without a share (the levels' shares are of the synthesis).
+  synthesizeFromVolume(layeredVolume(24, 5, 1), o);
   std::size_t analyses = 0;
   while (analyses < steps.size() && steps[analyses].first.starts_with("analysing the exemplar")) {
-    EXPECT_LT(steps[analyses].second, 0);
+    EXPECT_DOUBLE_EQ(steps[analyses].second, double(analyses) / 2) << steps[analyses].first;
     ++analyses;
   }
-  EXPECT_GT(analyses, 0u);
+  EXPECT_EQ(analyses, 2u);  // a 24^3 exemplar's 20^3 domain holds 5^3 windows at spacings 1 and 2
   ASSERT_LT(analyses, steps.size());
   EXPECT_EQ(steps[analyses].first.rfind("level 1/", 0), 0u) << steps[analyses].first;
-  for (std::size_t s = analyses + 1; s < steps.size(); ++s) EXPECT_GE(steps[s].second, steps[s - 1].second);
+  int passes = 0;
+  for (std::size_t s = analyses; s < steps.size(); ++s) {
+    if (s > analyses) {
+      EXPECT_GE(steps[s].second, steps[s - 1].second) << steps[s].first;
+    }
+    passes += steps[s].first.find(", correction ") != std::string::npos;
+  }
+  EXPECT_EQ(passes, 2 * o.corrections);
+  EXPECT_NE(steps.back().first.find("correction 4/4"), std::string::npos) << steps.back().first;
   EXPECT_DOUBLE_EQ(steps.back().second, 1);
 }
 
