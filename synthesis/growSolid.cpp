@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,21 +52,21 @@ GrowResult growSolid(const cv::Mat& photoSrgb, const GrowOptions& o) {
   // Before the first brick, the analysis reports; then each brick's share of the growth is its
   // finest window's share (thinner last bricks, margins cut at the volume's faces).
   std::optional<std::size_t> current;
-  std::vector<double> windowsBefore(bricks.size() + 1, 0);
+  std::vector<std::uint64_t> windowsBefore(bricks.size() + 1, 0);
   VolumeSynthesisOptions volumeOptions = o.volume;
   volumeOptions.region.reset();
   if (o.progress)
     volumeOptions.progress = [&](const std::string& step, double fraction) {
       if (!current) return o.progress("growing: " + step, fraction);
-      o.progress(
-          "brick " + std::to_string(*current + 1) + "/" + std::to_string(bricks.size()) + ", " + step,
-          (windowsBefore[*current] + fraction * (windowsBefore[*current + 1] - windowsBefore[*current])) /
-              windowsBefore.back());
+      o.progress("brick " + std::to_string(*current + 1) + "/" + std::to_string(bricks.size()) + ", " + step,
+                 (double(windowsBefore[*current]) +
+                  fraction * double(windowsBefore[*current + 1] - windowsBefore[*current])) /
+                     double(windowsBefore.back()));
     };
   const VolumeSynthesizer synthesizer(colorExemplar(seed.volume), volumeOptions);
   seed = {};
   for (std::size_t b = 0; b < bricks.size(); ++b)
-    windowsBefore[b + 1] = windowsBefore[b] + double(synthesizer.finestWindowVoxels(bricks[b]));
+    windowsBefore[b + 1] = windowsBefore[b] + synthesizer.finestWindowVoxels(bricks[b]);
 
   result.volume.dims = o.volume.dims;
   result.volume.color.resize(o.volume.dims.count());
@@ -74,11 +75,11 @@ GrowResult growSolid(const cv::Mat& photoSrgb, const GrowOptions& o) {
   for (current = 0; *current < bricks.size(); ++*current) {
     const VolumeSynthesisResult brick = synthesizer.synthesize(bricks[*current]);
     copyBrick(brick, result.volume);
-    result.finestVoxels += synthesizer.finestWindowVoxels(bricks[*current]);
     result.analysisSeconds = brick.statistics.analysisSeconds;
     result.seedDomain = brick.statistics.domain;
   }
   result.growthSeconds = secondsSince(start);
+  result.finestVoxels = windowsBefore.back();
   result.bricks = bricks.size();
   return result;
 }

@@ -545,7 +545,8 @@ VolumeSynthesisResult VolumeSynthesizer::synthesize(const Box& box) const {
     auto next = std::make_unique<CoordinateGrid>(upsample(grid.get(), a.domain, o, level, int(l)));
     const std::string name = "level " + std::to_string(l + 1) + "/" + std::to_string(plan.size()) +
                              " (spacing " + std::to_string(level.spacing);
-    if (level.appearance >= 0) {
+    const bool corrected = level.appearance >= 0 && o.corrections > 0;
+    if (corrected) {
       const Corrector corrector{a.domain, a.appearance[std::size_t(level.appearance)], o, level};
       for (int pass = 0; pass < o.corrections; ++pass) {
         correctionPass(*next, corrector);
@@ -556,9 +557,8 @@ VolumeSynthesisResult VolumeSynthesizer::synthesize(const Box& box) const {
               passVoxelsDone / passVoxels);
       }
     }
-    if (o.progress && !(level.appearance >= 0 && o.corrections > 0)) {
+    if (o.progress && !corrected)
       o.progress(name + ")", passVoxels > 0 ? passVoxelsDone / passVoxels : double(l + 1) / plan.size());
-    }
     grid = std::move(next);
     stats.seconds = secondsSince(levelStart);
     result.statistics.levels.push_back(stats);
