@@ -7,11 +7,18 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <new>
+#include <set>
+#include <stdexcept>
+#include <string>
 #include <system_error>
 
 #include <openvdb/io/Archive.h>
 #include <openvdb/io/File.h>
+#include <openvdb/io/GridDescriptor.h>
+#include <openvdb/io/io.h>
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
@@ -87,22 +94,66 @@ std::string readableReason(const std::string& what) {
   return out.empty() ? "damaged file" : out;
 }
 
-/// OpenVDB's own file writer does not check the stream it writes: this one writes the same bytes
-/// (a seekable archive) to a stream whose every failure is seen.
+// OpenVDB's own file writer does not check the stream it writes, and wants every grid at once:
+// this one writes the same bytes (a seekable archive) group by group, to a stream whose every
+// failure is seen.
 class CheckedArchive : public openvdb::io::Archive {
 public:
-  void writeTo(std::ostream& out, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) const {
-    write(out, grids, /*seekable=*/true, meta);
+  void writeTo(std::ostream& out, const std::vector<GridGroupMaker>& groups,
+               const openvdb::MetaMap& meta) const {
+    auto streamMetadata = std::make_shared<openvdb::io::StreamMetadata>();
+    openvdb::io::setStreamMetadataPtr(out, streamMetadata, /*transfer=*/false);
+    openvdb::io::setDataCompression(out, compression());
+    openvdb::io::setWriteGridStatsMetadata(out, isGridStatsMetadataEnabled());
+    writeHeader(out, /*seekable=*/true);
+    meta.writeMeta(out);
+    // The grid count comes before the grids, which are not made yet: written once they are.
+    const std::streampos countAt = out.tellp();
+    std::int32_t count = 0;
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    std::set<std::string> names;
+    for (const GridGroupMaker& makeGroup : groups) {
+      std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor> writtenTrees;
+      for (const openvdb::GridBase::Ptr& grid : makeGroup()) {
+        if (!grid) continue;
+        if (grid->getName().empty() || !names.insert(grid->getName()).second)
+          throw std::logic_error("writeVdbGrids: grid names must be unique and non-empty");
+        writeOne(out, grid, writtenTrees);
+        ++count;
+        // Some compression settings (the active mask's) are per grid.
+        openvdb::io::setDataCompression(out, compression());
+      }
+    }
+    out.seekp(countAt);
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.seekp(0, std::ios::end);
+  }
+
+private:
+  void writeOne(std::ostream& out, const openvdb::GridBase::Ptr& grid,
+                std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor>& writtenTrees) const {
+    openvdb::io::GridDescriptor descriptor(grid->getName(), grid->type(), grid->saveFloatAsHalf());
+    const openvdb::TreeBase* tree = &grid->baseTree();
+    const auto parent = writtenTrees.find(tree);
+    if (isInstancingEnabled() && parent != writtenTrees.end() &&
+        parent->second.saveFloatAsHalf() == descriptor.saveFloatAsHalf()) {
+      descriptor.setInstanceParentName(parent->second.uniqueName());
+      writeGridInstance(descriptor, grid, out, /*seekable=*/true);
+    } else {
+      writeGrid(descriptor, grid, out, /*seekable=*/true);
+      writtenTrees[tree] = descriptor;
+    }
   }
 };
 
-void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+void writeVdbGrids(const std::string& path, const std::vector<GridGroupMaker>& groups,
+                   const openvdb::MetaMap& meta) {
   try {
     std::ofstream out(path, std::ios::out | std::ios::binary | std::ios::trunc);
     if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno));
     CheckedArchive archive;
     archive.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-    archive.writeTo(out, grids, meta);
+    archive.writeTo(out, groups, meta);
     out.close();
     if (!out) throw InputError("cannot write " + path + ": " + std::strerror(errno ? errno : ENOSPC));
     stampContentUuid(path);
@@ -111,6 +162,10 @@ void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, co
   } catch (const std::ios_base::failure& e) {
     throw InputError("cannot write " + path + ": " + e.what());
   }
+}
+
+void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+  writeVdbGrids(path, {[&grids] { return grids; }}, meta);
 }
 
 VdbContents readVdbGrids(const std::string& path) {

@@ -1,5 +1,7 @@
 #pragma once
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <openvdb/openvdb.h>
 
@@ -22,10 +24,20 @@ openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& 
 // OpenVDB's message about a damaged file, cut to printable words on one short line.
 std::string readableReason(const std::string& what);
 
-// Writes grids and file metadata to a .vdb (Blosc), checking every write: a full disk throws
-// InputError, never leaves a truncated file behind a success. The header's UUID is hashed from
-// the content, so the same grids give the same bytes. Commands write through OutputFiles, which
-// puts the file in place only when all their outputs are written.
+// Makes one group of a file's grids when the writer reaches it, so that a large volume's grids are
+// built, written and freed a group at a time. Grids sharing a tree belong to one group (the file
+// stores the tree once); names must be unique and non-empty across the file.
+using GridGroupMaker = std::function<openvdb::GridPtrVec()>;
+
+// Writes grid groups and file metadata to a .vdb (Blosc), the bytes OpenVDB's own writer gives for
+// all the grids at once, checking every write: a full disk throws InputError, never leaves a
+// truncated file behind a success. The header's UUID is hashed from the content, so the same grids
+// give the same bytes. Commands write through OutputFiles, which puts the file in place only when
+// all their outputs are written.
+void writeVdbGrids(const std::string& path, const std::vector<GridGroupMaker>& groups,
+                   const openvdb::MetaMap& meta = {});
+
+// The same for grids already made: one group.
 void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids,
                    const openvdb::MetaMap& meta = {});
 

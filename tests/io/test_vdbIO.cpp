@@ -1,5 +1,7 @@
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
@@ -210,6 +212,75 @@ TEST(VdbLayout, RootTilesBehindEveryFixedSizeMapPass) {
     EXPECT_EQ(io::detail::readVdbGrids(path.string()).grids.size(), 2u) << transform->mapType();
     fs::remove(path);
   }
+}
+
+std::string bytesOf(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(VdbGrids, WritingGroupByGroupGivesOpenVdbsOwnFile) {
+  openvdb::initialize();
+  auto color = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.f));
+  color->setName("color");
+  color->denseFill(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(20, 9, 9)),
+                   openvdb::Vec3s(0.5f, 0.25f, 1.f));
+  auto cd = color->copyGrid();  // an instance: its tree is written once
+  cd->setName("Cd");
+  auto ids = openvdb::Int32Grid::create(0);
+  ids->setName("particle_id");
+  ids->tree().setValue(openvdb::Coord(3, 4, 5), 7);
+  auto density = openvdb::FloatGrid::create(
+      std::make_shared<openvdb::FloatTree>(ids->tree(), 0.f, 1.f, openvdb::TopologyCopy()));
+  density->setName("density");
+  openvdb::MetaMap meta;
+  meta.insertMeta("seed", openvdb::StringMetadata("3"));
+
+  const auto grouped = tempPath("grouped.vdb"), whole = tempPath("whole.vdb");
+  io::detail::writeVdbGrids(grouped.string(),
+                            {[&] {
+                               return openvdb::GridPtrVec{color, cd};
+                             },
+                             [&] {
+                               return openvdb::GridPtrVec{density, ids};
+                             }},
+                            meta);
+  openvdb::io::File file(whole.string());
+  file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+  file.write(openvdb::GridPtrVec{color, cd, density, ids}, meta);
+  // Byte for byte but the header's UUID (36 characters from byte 21), random in OpenVDB's file.
+  std::string a = bytesOf(grouped), b = bytesOf(whole);
+  ASSERT_EQ(a.size(), b.size());
+  a.replace(21, 36, 36, '-');
+  b.replace(21, 36, 36, '-');
+  EXPECT_TRUE(a == b);
+  const auto contents = io::detail::readVdbGrids(grouped.string());
+  ASSERT_EQ(contents.grids.size(), 4u);
+  EXPECT_EQ(contents.metadata->metaValue<std::string>("seed"), "3");
+  fs::remove(grouped);
+  fs::remove(whole);
+}
+
+TEST(VdbGrids, AGridNameTwiceIsAProgrammingError) {
+  auto a = openvdb::FloatGrid::create(), b = openvdb::FloatGrid::create();
+  a->setName("density");
+  b->setName("density");
+  const auto path = tempPath("twice.vdb");
+  EXPECT_THROW(io::detail::writeVdbGrids(path.string(), openvdb::GridPtrVec{a, b}), std::logic_error);
+  fs::remove(path);
+}
+
+TEST(VdbIO, DensityBesideColourKeepsOnlyItsNonZeroVoxelsActive) {
+  SolidVolume v = smallParticleVolume();
+  v.particleId.clear();
+  const auto path = tempPath("densityAndColour.vdb");
+  writeVdb(path.string(), v);
+  openvdb::io::File file(path.string());
+  file.open();
+  EXPECT_EQ(file.readGrid("density")->activeVoxelCount(), 1u);
+  EXPECT_EQ(file.readGrid("color")->activeVoxelCount(), 5u * 4 * 3);
+  file.close();
+  fs::remove(path);
 }
 
 }  // namespace
