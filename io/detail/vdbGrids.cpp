@@ -115,7 +115,6 @@ public:
     for (const GridGroupMaker& makeGroup : groups) {
       std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor> writtenTrees;
       for (const openvdb::GridBase::Ptr& grid : makeGroup()) {
-        if (!grid) continue;
         if (grid->getName().empty() || !names.insert(grid->getName()).second)
           throw std::logic_error("writeVdbGrids: grid names must be unique and non-empty");
         writeOne(out, grid, writtenTrees);

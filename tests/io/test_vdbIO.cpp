@@ -270,18 +270,5 @@ TEST(VdbGrids, AGridNameTwiceIsAProgrammingError) {
   fs::remove(path);
 }
 
-TEST(VdbIO, DensityBesideColourKeepsOnlyItsNonZeroVoxelsActive) {
-  SolidVolume v = smallParticleVolume();
-  v.particleId.clear();
-  const auto path = tempPath("densityAndColour.vdb");
-  writeVdb(path.string(), v);
-  openvdb::io::File file(path.string());
-  file.open();
-  EXPECT_EQ(file.readGrid("density")->activeVoxelCount(), 1u);
-  EXPECT_EQ(file.readGrid("color")->activeVoxelCount(), 5u * 4 * 3);
-  file.close();
-  fs::remove(path);
-}
-
 }  // namespace
 }  // namespace solidtex

@@ -8,8 +8,9 @@ log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 "$@" 2>&1 | tee "$log"
 status=${PIPESTATUS[0]}
-if grep -q "valgrind: Unrecognised instruction" "$log" && ! grep -q "^\[ RUN" "$log"; then
-  echo "memcheck skipped: Valgrind cannot decode an instruction this CPU hides from CPUID"
+# RDTSCP is 0F 01 F9; a trap (ud2) from a real bug is reported alike but with other bytes.
+if grep -q "unhandled instruction bytes: 0xF 0x1 0xF9 " "$log" && ! grep -q "^\[ RUN" "$log"; then
+  echo "memcheck skipped: Valgrind cannot decode RDTSCP, which this CPU hides from CPUID"
   exit 77
 fi
 exit "$status"
