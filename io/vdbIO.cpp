@@ -10,6 +10,7 @@
 #include <fstream>
 #include <new>
 #include <system_error>
+#include <vector>
 
 #include <sys/mman.h>
 #include <unistd.h>
@@ -72,13 +73,13 @@ typename GridT::Ptr sparseFrom(const Dims& dims, std::vector<Value>& data,
 }
 
 // density: the volume's own, or 1 on the particles (the active voxels of `ids`), or 1 everywhere.
-openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, const openvdb::Int32Grid::Ptr& ids,
+// Without colour the density is the content (a solid from a density volume): every voxel stays
+// active, zeros included, so the file keeps its box.
+openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, bool hasColor, const openvdb::Int32Grid::Ptr& ids,
                                     const openvdb::math::Transform::Ptr& xform) {
   openvdb::FloatGrid::Ptr grid;
   if (!volume.density.empty()) {
-    // Without colour the density is the content (a solid from a density volume): every voxel stays
-    // active, zeros included, so the file keeps its box.
-    const float tolerance = volume.color.empty() ? -1.f : 0.f;
+    const float tolerance = hasColor ? 0.f : -1.f;
     grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, tolerance, "density", xform);
   } else if (ids) {
     grid = openvdb::FloatGrid::create(
@@ -93,39 +94,51 @@ openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, const openvdb::Int32Gri
   return grid;
 }
 
-// Each dense array is consumed by its grid, so the volume is never held twice.
-openvdb::GridPtrVec gridsOf(SolidVolume& volume, double voxelSize) {
-  auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
-  // A region of a larger volume keeps its index space from 0 and is placed by its transform.
-  xform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) * voxelSize);
+// A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
+openvdb::GridPtrVec colorGrids(SolidVolume& volume, const openvdb::math::Transform::Ptr& xform) {
+  auto color =
+      sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+  color->setVectorType(openvdb::VEC_INVARIANT);
+  auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
+  cd->setName("Cd");
+  return {color, cd};
+}
+
+openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
+                                      const openvdb::math::Transform::Ptr& xform) {
   openvdb::Int32Grid::Ptr ids;
   if (!volume.particleId.empty())
     ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
-  openvdb::GridPtrVec grids;
-  grids.push_back(densityGrid(volume, ids, xform));
-  if (!volume.color.empty()) {
-    // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
-    auto color =
-        sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
-    color->setVectorType(openvdb::VEC_INVARIANT);
-    grids.push_back(color);
-    auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
-    cd->setName("Cd");
-    grids.push_back(cd);
-  }
-  if (ids) grids.push_back(ids);
-  if (!volume.sourcePosition.empty()) {
-    std::vector<Rgb> positions(volume.sourcePosition.size());
-    for (std::size_t i = 0; i < positions.size(); ++i)
-      positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
-    release(volume.sourcePosition);
-    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
-                                                   "source_position", xform));
-  }
+  auto density = densityGrid(volume, hasColor, ids, xform);
+  return ids ? openvdb::GridPtrVec{density, ids} : openvdb::GridPtrVec{density};
+}
+
+// The grids in groups, each consuming its dense arrays when the writer reaches it and freed once
+// written. Colour goes first: its tree (12 bytes a voxel) is built while only the dense ids (4) are
+// left beside it, and the ids' and density's trees come after it is gone.
+std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double voxelSize) {
+  auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
+  // A region of a larger volume keeps its index space from 0 and is placed by its transform.
+  xform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) * voxelSize);
+  std::vector<io::detail::GridGroupMaker> groups;
+  const bool hasColor = !volume.color.empty();
+  if (hasColor) groups.push_back([&volume, xform] { return colorGrids(volume, xform); });
+  groups.push_back([&volume, hasColor, xform] { return densityAndIdGrids(volume, hasColor, xform); });
+  if (!volume.sourcePosition.empty())
+    groups.push_back([&volume, xform] {
+      std::vector<Rgb> positions(volume.sourcePosition.size());
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
+      release(volume.sourcePosition);
+      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
+                                                                "source_position", xform)};
+    });
   if (!volume.sourceVoxel.empty())
-    grids.push_back(sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.sourceVoxel, openvdb::Vec3s(-1.f),
-                                                   "source", xform));
-  return grids;
+    groups.push_back([&volume, xform] {
+      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.sourceVoxel,
+                                                                openvdb::Vec3s(-1.f), "source", xform)};
+    });
+  return groups;
 }
 
 }  // namespace
@@ -141,7 +154,7 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
       throw std::logic_error("writeVdb: a grid does not match the volume's dimensions");
   openvdb::MetaMap meta;
   for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
-  io::detail::writeVdbGrids(path, gridsOf(volume, voxelSize), meta);
+  io::detail::writeVdbGrids(path, gridGroupsOf(volume, voxelSize), meta);
 }
 
 namespace {

@@ -177,7 +177,7 @@ void checkParticleSolidOptions(const ParticleSolidOptions& options) {
 
 double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer) {
   constexpr double kEveryRun = 200.0 * 1024 * 1024;
-  constexpr double kPerPlacedVoxel = 10.3, kIdBytes = 4, kPerVoxelWriting = 20.5;
+  constexpr double kPerPlacedVoxel = 10.3, kIdBytes = 4, kPerVoxelWriting = 16.3;
   // delaunay's triangulation of the free space: 1459 MiB against edt's 673 for gravel at 256^3, walls.
   constexpr double kDelaunayPerPlacedVoxel = 49;
   const double voxels = double(dims.count()), placedVoxels = double(placed.count());

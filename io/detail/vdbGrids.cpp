@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,7 @@
 #include "common/memoryBudget.h"
 #include "io/checkVdbLayout.h"
 #include "io/detail/CapturedStderr.h"
+#include "io/detail/valuesChecksum.h"
 
 namespace solidtex::io::detail {
 namespace {
@@ -72,6 +74,31 @@ std::uint64_t readingAllowance(const std::string& path) {
   return std::uint64_t(std::min(bytes, double(availableMemoryBytes())));
 }
 
+// "density grid", or "Cd and color grids" for grids that share one tree.
+std::string gridsSharing(const openvdb::GridBase& grid, const openvdb::GridPtrVec& grids) {
+  std::string names;
+  int count = 0;
+  for (const auto& other : grids)
+    if (&other->constBaseTree() == &grid.constBaseTree())
+      names += (count++ == 0 ? "" : " and ") + other->getName();
+  return names + (count > 1 ? " grids" : " grid");
+}
+
+// Every grid that carries solidtex's checksum must still have the values it was written with (a
+// tree shared by several grids is checked once).
+void checkValues(const std::string& path, const openvdb::GridPtrVec& grids) {
+  std::map<const openvdb::TreeBase*, std::optional<std::uint64_t>> checksums;
+  for (const auto& grid : grids) {
+    const auto written = grid->getMetadata<openvdb::StringMetadata>(kValuesChecksumName);
+    if (!written) continue;
+    const auto known = checksums.try_emplace(&grid->constBaseTree());
+    if (known.second) known.first->second = valuesChecksum(*grid);
+    if (!known.first->second || checksumText(*known.first->second) != written->value())
+      throw InputError("cannot read " + path + ": damaged (the values of its " + gridsSharing(*grid, grids) +
+                       " do not match the checksum written with them)");
+  }
+}
+
 }  // namespace
 
 // OpenVDB's messages about a damaged file can quote whatever bytes it found (a "grid type" of 800
@@ -114,10 +141,13 @@ public:
     std::set<std::string> names;
     for (const GridGroupMaker& makeGroup : groups) {
       std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor> writtenTrees;
+      std::map<const openvdb::TreeBase*, std::optional<std::uint64_t>> checksums;
       for (const openvdb::GridBase::Ptr& grid : makeGroup()) {
         if (grid->getName().empty() || !names.insert(grid->getName()).second)
           throw std::logic_error("writeVdbGrids: grid names must be unique and non-empty");
-        writeOne(out, grid, writtenTrees);
+        const auto known = checksums.try_emplace(&grid->baseTree());
+        if (known.second) known.first->second = valuesChecksum(*grid);
+        writeOne(out, withChecksum(grid, known.first->second), writtenTrees);
         ++count;
         // Some compression settings (the active mask's) are per grid.
         openvdb::io::setDataCompression(out, compression());
@@ -129,6 +159,15 @@ public:
   }
 
 private:
+  // A shallow copy (same tree) carrying the checksum, so the caller's grid is left as it was.
+  static openvdb::GridBase::Ptr withChecksum(const openvdb::GridBase::Ptr& grid,
+                                             const std::optional<std::uint64_t>& checksum) {
+    if (!checksum) return grid;
+    openvdb::GridBase::Ptr copy = grid->copyGrid();
+    copy->insertMeta(kValuesChecksumName, openvdb::StringMetadata(checksumText(*checksum)));
+    return copy;
+  }
+
   void writeOne(std::ostream& out, const openvdb::GridBase::Ptr& grid,
                 std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor>& writtenTrees) const {
     openvdb::io::GridDescriptor descriptor(grid->getName(), grid->type(), grid->saveFloatAsHalf());
@@ -192,6 +231,7 @@ VdbContents readVdbGrids(const std::string& path) {
   }
   for (const auto& grid : contents.grids)
     if (!grid) throw InputError("cannot read " + path + ": damaged (a grid could not be read)");
+  checkValues(path, contents.grids);
   return contents;
 }
 

@@ -15,7 +15,8 @@ struct VdbContents {
 
 // Reads a whole .vdb at once: without delayed loading, damage is found while reading, not later
 // when the grids are destroyed. Anything OpenVDB refuses, or memory a damaged size asks for, is
-// one InputError naming the file, with OpenVDB's reason cut to a readable line.
+// one InputError naming the file, with OpenVDB's reason cut to a readable line; so is a grid whose
+// values no longer match the checksum writeVdbGrids put in its metadata.
 VdbContents readVdbGrids(const std::string& path);
 
 // The grid named `name`, or null.
@@ -30,10 +31,10 @@ std::string readableReason(const std::string& what);
 using GridGroupMaker = std::function<openvdb::GridPtrVec()>;
 
 // Writes grid groups and file metadata to a .vdb (Blosc), the bytes OpenVDB's own writer gives for
-// all the grids at once, checking every write: a full disk throws InputError, never leaves a
-// truncated file behind a success. The header's UUID is hashed from the content, so the same grids
-// give the same bytes. Commands write through OutputFiles, which puts the file in place only when
-// all their outputs are written.
+// all the grids at once with each grid's valuesChecksum in its metadata, checking every write: a full disk
+// throws InputError, never leaves a truncated file behind a success. The header's UUID is hashed from the
+// content, so the same grids give the same bytes. Commands write through OutputFiles, which puts the file in
+// place only when all their outputs are written.
 void writeVdbGrids(const std::string& path, const std::vector<GridGroupMaker>& groups,
                    const openvdb::MetaMap& meta = {});
 

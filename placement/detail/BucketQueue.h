@@ -17,9 +17,10 @@ namespace solidtex::placement::detail {
 /// appended to its new bucket and its old entry is left behind, recognised as stale because the
 /// voxel's key no longer matches. Checking stale entries one by one costs a cache miss each, so it
 /// is done only in the buckets that are sampled (compacted there once they are mostly stale); the
-/// rest are cleaned together, by one streaming pass over the keys, once the stale entries outnumber
-/// both the live ones and a quarter of the volume. A voxel costs sizeof(Key) + 4 bytes, plus up to
-/// as much again in stale entries, and random members of a bucket are drawn in O(1).
+/// rest are cleaned together, by one streaming pass over the keys, once the stale entries pass both
+/// a quarter of the live ones and a sixteenth of the volume. A voxel costs sizeof(Key) + 4 bytes,
+/// plus up to a quarter as much again in stale entries, and random members of a bucket are drawn in
+/// O(1).
 template <class Key>
 class BucketQueue {
 public:
@@ -44,7 +45,7 @@ public:
       buckets_.push(newKey, v);
     else
       --live_;
-    if (stale_ > std::max(live_, keys_.size() / 4)) rebuild();
+    if (4 * stale_ > std::max(live_, keys_.size() / 4)) rebuild();
   }
 
   /// Appends up to maxCount - out.size() voxels with keys >= minKey: the smallest key first, and
