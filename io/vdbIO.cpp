@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <new>
 #include <system_error>
 #include <vector>
@@ -94,14 +95,47 @@ openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, bool hasColor, const op
   return grid;
 }
 
+// The colour grid's topology, every voxel of the box active, in leaves that hold no values.
+openvdb::Vec3SGrid::Ptr activeBoxTopology(const Dims& dims) {
+  using Leaf = openvdb::Vec3STree::LeafNodeType;
+  auto grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.f));
+  const openvdb::CoordBBox box = boxOf(dims);
+  for (int z = 0; z < dims.z; z += int(Leaf::DIM))
+    for (int y = 0; y < dims.y; y += int(Leaf::DIM))
+      for (int x = 0; x < dims.x; x += int(Leaf::DIM)) {
+        auto leaf = std::make_unique<Leaf>(openvdb::PartialCreate(), openvdb::Coord(x, y, z));
+        for (openvdb::Index n = 0; n < Leaf::SIZE; ++n)
+          if (box.isInside(leaf->offsetToGlobalCoord(n))) leaf->setValueOn(n);
+        grid->tree().addLeaf(leaf.release());
+      }
+  return grid;
+}
+
 // A negative tolerance keeps every voxel active: colour must cover the whole box, black included.
-openvdb::GridPtrVec colorGrids(SolidVolume& volume, const openvdb::math::Transform::Ptr& xform) {
-  auto color =
-      sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+// Colours painted on demand are painted leaf by leaf as they are written, from the dense ids.
+io::detail::GridGroup colorGrids(SolidVolume& volume, const openvdb::math::Transform::Ptr& xform) {
+  io::detail::GridGroup group;
+  openvdb::Vec3SGrid::Ptr color;
+  if (!volume.color.empty()) {
+    color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+  } else {
+    color = activeBoxTopology(volume.dims);
+    group.painters[&color->tree()] = [&volume](const openvdb::Coord& origin, openvdb::Vec3s* values) {
+      for (openvdb::Index n = 0; n < openvdb::Vec3STree::LeafNodeType::SIZE; ++n) {
+        const openvdb::Coord c = origin + openvdb::Vec3STree::LeafNodeType::offsetToLocalCoord(n);
+        const bool inside = volume.dims.contains(c.x(), c.y(), c.z());
+        const Rgb rgb = inside ? volume.colorAt(c.x(), c.y(), c.z()) : Rgb{0.f, 0.f, 0.f};
+        values[n] = openvdb::Vec3s(rgb[0], rgb[1], rgb[2]);
+      }
+    };
+    color->setName("color");
+    color->setTransform(xform);
+  }
   color->setVectorType(openvdb::VEC_INVARIANT);
   auto cd = color->copyGrid();  // shares the tree: Houdini's name for the same data
   cd->setName("Cd");
-  return {color, cd};
+  group.grids = {color, cd};
+  return group;
 }
 
 openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
@@ -121,7 +155,7 @@ std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double
   // A region of a larger volume keeps its index space from 0 and is placed by its transform.
   xform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) * voxelSize);
   std::vector<io::detail::GridGroupMaker> groups;
-  const bool hasColor = !volume.color.empty();
+  const bool hasColor = volume.hasColor();
   if (hasColor) groups.push_back([&volume, xform] { return colorGrids(volume, xform); });
   groups.push_back([&volume, hasColor, xform] { return densityAndIdGrids(volume, hasColor, xform); });
   if (!volume.sourcePosition.empty())
@@ -145,8 +179,13 @@ std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double
 
 void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   openvdb::initialize();
-  if ((!volume.color.empty() || volume.density.empty()) && volume.color.size() != volume.dims.count())
+  if (volume.coloring && volume.color.empty()) {
+    if (volume.particleId.size() != volume.dims.count())
+      throw std::logic_error("writeVdb: colours are painted from the particle ids, which it lacks");
+  } else if ((!volume.color.empty() || volume.density.empty()) &&
+             volume.color.size() != volume.dims.count()) {
     throw std::logic_error("writeVdb: colour grid does not match the volume's dimensions");
+  }
   // The grids consume their arrays slab by slab, handing pages back: a short one would lose others' data.
   for (const std::size_t size : {volume.density.size(), volume.particleId.size(),
                                  volume.sourcePosition.size(), volume.sourceVoxel.size()})

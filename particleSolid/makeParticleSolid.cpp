@@ -12,7 +12,7 @@
 #include "common/memoryBudget.h"
 #include "mesh/particleMeshes.h"
 #include "placement/cropToCountedBox.h"
-#include "voxel/paintParticleSolid.h"
+#include "voxel/ParticleColoring.h"
 
 namespace solidtex {
 namespace {
@@ -99,11 +99,15 @@ ParticleFactory makeFactory(const ParticleSolidOptions& options, const ExemplarS
 // Each mesh takes its particle's mean colour, texture and all.
 void paintMeshes(std::vector<ParticleMesh>& meshes, const SolidVolume& volume) {
   std::vector<std::array<double, 4>> sums(meshes.size() + 1, {0, 0, 0, 0});  // per id: r, g, b, count
-  for (std::size_t i = 0; i < volume.particleId.size(); ++i) {
-    auto& sum = sums[std::size_t(volume.particleId[i])];
-    for (int c = 0; c < 3; ++c) sum[std::size_t(c)] += volume.color[i][std::size_t(c)];
-    sum[3] += 1;
-  }
+  const Dims& d = volume.dims;
+  for (int z = 0; z < d.z; ++z)
+    for (int y = 0; y < d.y; ++y)
+      for (int x = 0; x < d.x; ++x) {
+        auto& sum = sums[std::size_t(volume.particleId[d.index(x, y, z)])];
+        const Rgb rgb = volume.colorAt(x, y, z);
+        for (int c = 0; c < 3; ++c) sum[std::size_t(c)] += rgb[std::size_t(c)];
+        sum[3] += 1;
+      }
   for (ParticleMesh& m : meshes) {
     const auto& sum = sums[std::size_t(m.id)];
     for (int c = 0; c < 3; ++c) m.color[std::size_t(c)] = float(sum[std::size_t(c)] / std::max(1.0, sum[3]));
@@ -177,7 +181,7 @@ void checkParticleSolidOptions(const ParticleSolidOptions& options) {
 
 double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer) {
   constexpr double kEveryRun = 200.0 * 1024 * 1024;
-  constexpr double kPerPlacedVoxel = 10.3, kIdBytes = 4, kPerVoxelWriting = 16.3;
+  constexpr double kPerPlacedVoxel = 7.6, kIdBytes = 4, kPerVoxelWriting = 8.2;
   // delaunay's triangulation of the free space: 1459 MiB against edt's 673 for gravel at 256^3, walls.
   constexpr double kDelaunayPerPlacedVoxel = 49;
   const double voxels = double(dims.count()), placedVoxels = double(placed.count());
@@ -262,12 +266,12 @@ ParticleSolid ParticleSolidBuilder::finish() {
   const double scale = solid_.voxelsPerPixel;
   PlacementResult& placement = solid_.placement;
   solid_.timer.start("matrix");
-  const std::optional<TiledMatrix> matrix =
+  std::optional<TiledMatrix> matrix =
       makeBlock(options_, options_.matrix, synthesizeMatrix, stats, scale, 0x3A7B1C,
                 "the photo shows too little matrix to learn its texture", progress_,
                 "synthesizing the matrix", solid_.matrix);
   solid_.timer.start("particle_grain");
-  const std::optional<TiledMatrix> grain =
+  std::optional<TiledMatrix> grain =
       makeBlock(options_, options_.particleTexture, synthesizeParticleGrain, stats, scale, 0x6A17E5,
                 "the photo shows too little of its particles to learn their grain", progress_,
                 "synthesizing the particles' grain", solid_.particleTexture);
@@ -281,9 +285,12 @@ ParticleSolid ParticleSolidBuilder::finish() {
                       {placed.origin.x + placed.box.x * 0.5, placed.origin.y + placed.box.y * 0.5,
                        placed.origin.z + placed.box.z * 0.5},
                       placed.voxelsPerPixel});
-  solid_.volume = paintParticleSolid(stats, placement.dims, std::move(placement.ids), paints, scale,
-                                     options_.seed, options_.boundary == Boundary::Periodic,
-                                     matrix ? &*matrix : nullptr, grain ? &*grain : nullptr);
+  // Painted when asked (writing paints the .vdb's colour leaf by leaf): never held dense here.
+  solid_.volume.dims = placement.dims;
+  solid_.volume.particleId = std::move(placement.ids);
+  solid_.volume.coloring = std::make_shared<ParticleColoring>(
+      stats, placement.dims, std::move(paints), scale, options_.seed, options_.boundary == Boundary::Periodic,
+      std::move(matrix), std::move(grain));
   placement.ids.clear();
 
   if (options_.meshes) {

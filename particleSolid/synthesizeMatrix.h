@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "segmentation/ExemplarStats.h"
-#include "voxel/paintParticleSolid.h"
+#include "voxel/ParticleColoring.h"
 
 namespace solidtex {
 

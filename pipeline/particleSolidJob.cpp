@@ -66,6 +66,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   nlohmann::json written = {{"vdb", job.output}};
   if (job.meshPath) written["meshes"] = meshReport(outputs, *job.meshPath, solid.meshes);
   if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, solid.volume);
+  // Exports are dense arrays: their colours are painted whole, which the .vdb alone does not need.
+  if (job.exports.tiff || job.exports.npy || job.exports.vti) paintColor(solid.volume);
   // A voxel is 1 / scale of the photo's pixels, whose size in µm a user may know.
   const auto exported =
       writeVolumeExports(outputs, job.exports, solid.volume, {1 / solid.voxelsPerPixel, "pixel"});

@@ -269,12 +269,14 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
     report = particleSolidReport(solid, options);
     report["time_seconds"] = solid.timer.finish();
     report["peak_memory_mib"] = peakMemoryMiB();
-    if (!outputs) return;
-    solid.volume.metadata = particleSolidMetadata(solid, options, "solidtex.particles (Python)");
-    if (output) outputs->write(*output, [&](const std::string& path) { writeVdb(path, solid.volume); });
-    if (reportPath)
-      outputs->write(*reportPath, [&](const std::string& path) { writeJsonFile(path, report); });
-    outputs->commit();
+    if (outputs) {
+      solid.volume.metadata = particleSolidMetadata(solid, options, "solidtex.particles (Python)");
+      if (output) outputs->write(*output, [&](const std::string& path) { writeVdb(path, solid.volume); });
+      if (reportPath)
+        outputs->write(*reportPath, [&](const std::string& path) { writeJsonFile(path, report); });
+      outputs->commit();
+    }
+    paintColor(solid.volume);  // after writing, which paints the .vdb's leaf by leaf
   });
   const Dims d = solid.volume.dims;
   py::dict result;

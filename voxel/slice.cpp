@@ -43,11 +43,13 @@ SlicePlane obliquePlane(const Dims& dims, const Eigen::Vector3d& normal, const E
 }
 
 cv::Mat colorSlice(const SolidVolume& volume, const SlicePlane& plane) {
-  const auto samples = slice(volume.dims, volume.color, plane, Rgb{0.f, 0.f, 0.f});
-  cv::Mat image(plane.height, plane.width, CV_32FC3);
+  cv::Mat image(plane.height, plane.width, CV_32FC3, cv::Scalar::all(0));
   for (int r = 0; r < plane.height; ++r)
     for (int c = 0; c < plane.width; ++c) {
-      const Rgb& s = samples[std::size_t(r) * std::size_t(plane.width) + std::size_t(c)];
+      const Eigen::Vector3d p = plane.origin + double(c) * plane.u + double(r) * plane.v;
+      const int i = int(std::lround(p.x())), j = int(std::lround(p.y())), k = int(std::lround(p.z()));
+      if (!volume.dims.contains(i, j, k)) continue;
+      const Rgb s = volume.colorAt(i, j, k);
       image.at<cv::Vec3f>(r, c) = {linearToSrgb(s[0]), linearToSrgb(s[1]), linearToSrgb(s[2])};
     }
   return image;

@@ -27,27 +27,21 @@ struct Hash {
   }
 };
 
-template <class GridT>
-std::uint64_t checksumOf(const GridT& grid) {
-  using TreeT = typename GridT::TreeType;
-  using LeafT = typename TreeT::LeafNodeType;
-  const openvdb::tree::LeafManager<const TreeT> leaves(grid.tree());
-  std::vector<std::uint64_t> leafHashes(leaves.leafCount());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.leafCount()),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                        const LeafT& leaf = leaves.leaf(i);
-                        Hash h;
-                        h.addBytes(leaf.origin());
-                        for (openvdb::Index w = 0; w < LeafT::NodeMaskType::WORD_COUNT; ++w)
-                          h.add(leaf.getValueMask().template getWord<std::uint64_t>(w));
-                        for (auto value = leaf.cbeginValueOn(); value; ++value) h.addBytes(*value);
-                        leafHashes[i] = h.state;
-                      }
-                    });
+template <class LeafT>
+std::uint64_t leafHash(const LeafT& leaf) {
+  Hash h;
+  h.addBytes(leaf.origin());
+  for (openvdb::Index w = 0; w < LeafT::NodeMaskType::WORD_COUNT; ++w)
+    h.add(leaf.getValueMask().template getWord<std::uint64_t>(w));
+  for (auto value = leaf.cbeginValueOn(); value; ++value) h.addBytes(*value);
+  return h.state;
+}
+
+template <class TreeT>
+std::uint64_t combined(const TreeT& tree, const std::vector<std::uint64_t>& leafHashes) {
   Hash total;
   for (const std::uint64_t leafHash : leafHashes) total.add(leafHash);
-  typename TreeT::ValueOnCIter tile = grid.tree().cbeginValueOn();
+  typename TreeT::ValueOnCIter tile = tree.cbeginValueOn();
   tile.setMaxDepth(TreeT::ValueOnCIter::LEAF_DEPTH - 1);
   for (; tile; ++tile) {
     total.addBytes(tile.getCoord());
@@ -57,6 +51,19 @@ std::uint64_t checksumOf(const GridT& grid) {
   return total.state;
 }
 
+template <class GridT>
+std::uint64_t checksumOf(const GridT& grid) {
+  using TreeT = typename GridT::TreeType;
+  const openvdb::tree::LeafManager<const TreeT> leaves(grid.tree());
+  std::vector<std::uint64_t> leafHashes(leaves.leafCount());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.leafCount()),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end(); ++i)
+                        leafHashes[i] = leafHash(leaves.leaf(i));
+                    });
+  return combined(grid.tree(), leafHashes);
+}
+
 }  // namespace
 
 std::optional<std::uint64_t> valuesChecksum(const openvdb::GridBase& grid) {
@@ -64,6 +71,13 @@ std::optional<std::uint64_t> valuesChecksum(const openvdb::GridBase& grid) {
   grid.apply<openvdb::TypeList<openvdb::FloatGrid, openvdb::Int32Grid, openvdb::Vec3SGrid>>(
       [&](const auto& typed) { checksum = checksumOf(typed); });
   return checksum;
+}
+
+std::uint64_t leafChecksum(const openvdb::Vec3STree::LeafNodeType& leaf) { return leafHash(leaf); }
+
+std::uint64_t valuesChecksum(const openvdb::Vec3STree& tree,
+                             const std::vector<std::uint64_t>& leafChecksums) {
+  return combined(tree, leafChecksums);
 }
 
 std::string checksumText(std::uint64_t checksum) {

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <openvdb/openvdb.h>
 
@@ -14,6 +15,11 @@ inline constexpr const char* kValuesChecksumName = "solidtex_values_checksum";
 // A 64-bit checksum of a float, int32 or Vec3s grid's topology and active values (leaves hashed in
 // parallel, combined in tree order: the same at any thread count); nullopt for other grid types.
 std::optional<std::uint64_t> valuesChecksum(const openvdb::GridBase& grid);
+
+// The same checksum built from its parts, for a writer that makes a grid's leaves a batch at a
+// time: each leaf's hash, then all of them in tree order with the tree's tiles.
+std::uint64_t leafChecksum(const openvdb::Vec3STree::LeafNodeType& leaf);
+std::uint64_t valuesChecksum(const openvdb::Vec3STree& tree, const std::vector<std::uint64_t>& leafChecksums);
 
 // The checksum as the metadata keeps it.
 std::string checksumText(std::uint64_t checksum);

@@ -12,6 +12,7 @@
 #include <new>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -20,6 +21,8 @@
 #include <openvdb/io/File.h>
 #include <openvdb/io/GridDescriptor.h>
 #include <openvdb/io/io.h>
+#include <openvdb/tree/LeafManager.h>
+#include <tbb/parallel_for.h>
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
@@ -142,12 +145,18 @@ public:
     for (const GridGroupMaker& makeGroup : groups) {
       std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor> writtenTrees;
       std::map<const openvdb::TreeBase*, std::optional<std::uint64_t>> checksums;
-      for (const openvdb::GridBase::Ptr& grid : makeGroup()) {
+      const GridGroup group = makeGroup();
+      for (const openvdb::GridBase::Ptr& grid : group.grids) {
         if (grid->getName().empty() || !names.insert(grid->getName()).second)
           throw std::logic_error("writeVdbGrids: grid names must be unique and non-empty");
-        const auto known = checksums.try_emplace(&grid->baseTree());
-        if (known.second) known.first->second = valuesChecksum(*grid);
-        writeOne(out, withChecksum(grid, known.first->second), writtenTrees);
+        const auto painter = group.painters.find(&grid->baseTree());
+        if (painter != group.painters.end() && !writtenTrees.count(&grid->baseTree())) {
+          checksums[&grid->baseTree()] = writePainted(out, grid, painter->second, writtenTrees);
+        } else {
+          const auto known = checksums.try_emplace(&grid->baseTree());
+          if (known.second) known.first->second = valuesChecksum(*grid);
+          writeOne(out, withChecksum(grid, known.first->second), writtenTrees);
+        }
         ++count;
         // Some compression settings (the active mask's) are per grid.
         openvdb::io::setDataCompression(out, compression());
@@ -166,6 +175,70 @@ private:
     openvdb::GridBase::Ptr copy = grid->copyGrid();
     copy->insertMeta(kValuesChecksumName, openvdb::StringMetadata(checksumText(*checksum)));
     return copy;
+  }
+
+  // Archive::writeGrid's steps, with the values painted and written a batch of leaves at a time
+  // and the checksum put in the metadata once they are all written.
+  std::uint64_t writePainted(
+      std::ostream& out, const openvdb::GridBase::Ptr& grid, const LeafPainter& paint,
+      std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor>& writtenTrees) const {
+    const auto typed = openvdb::GridBase::grid<openvdb::Vec3SGrid>(grid);
+    if (!typed) throw std::logic_error("writeVdbGrids: only Vec3s grids are painted");
+    openvdb::io::GridDescriptor descriptor(grid->getName(), grid->type(), grid->saveFloatAsHalf());
+    descriptor.writeHeader(out);
+    const std::streampos offsets = out.tellp();
+    descriptor.writeStreamPos(out);
+    descriptor.setGridPos(out.tellp());
+    setGridCompression(out, *grid);
+    const std::string placeholder(16, '?');
+    const openvdb::GridBase::Ptr copy = grid->copyGrid();
+    copy->addStatsMetadata();  // from the topology: bounds, voxel count and memory
+    copy->insertMeta(
+        openvdb::GridBase::META_FILE_COMPRESSION,
+        openvdb::StringMetadata(openvdb::io::compressionToString(openvdb::io::getDataCompression(out))));
+    copy->insertMeta(kValuesChecksumName, openvdb::StringMetadata(placeholder));
+    std::ostringstream meta;
+    copy->writeMeta(meta);
+    const std::string metaBytes = meta.str();
+    const std::streampos checksumAt = out.tellp() + std::streamoff(metaBytes.find(placeholder));
+    out.write(metaBytes.data(), std::streamsize(metaBytes.size()));
+    grid->writeTransform(out);
+    grid->writeTopology(out);
+    descriptor.setBlockPos(out.tellp());
+    const std::uint64_t checksum = writePaintedLeaves(out, typed->tree(), paint);
+    descriptor.setEndPos(out.tellp());
+    out.seekp(offsets);
+    descriptor.writeStreamPos(out);
+    out.seekp(checksumAt);
+    out.write(checksumText(checksum).data(), std::streamsize(placeholder.size()));
+    descriptor.seekToEnd(out);
+    writtenTrees[&grid->baseTree()] = descriptor;
+    return checksum;
+  }
+
+  // The leaves in tree order (RootNode::writeBuffers'), each batch painted in parallel.
+  static std::uint64_t writePaintedLeaves(std::ostream& out, const openvdb::Vec3STree& tree,
+                                          const LeafPainter& paint) {
+    using Leaf = openvdb::Vec3STree::LeafNodeType;
+    constexpr std::size_t kBatch = 4096;  // 24 MiB of values
+    const openvdb::tree::LeafManager<const openvdb::Vec3STree> leaves(tree);
+    std::vector<std::unique_ptr<Leaf>> batch;
+    for (std::size_t i = 0; i < std::min(kBatch, leaves.leafCount()); ++i)
+      batch.push_back(std::make_unique<Leaf>());
+    std::vector<std::uint64_t> leafChecksums(leaves.leafCount());
+    for (std::size_t first = 0; first < leaves.leafCount(); first += kBatch) {
+      const std::size_t count = std::min(kBatch, leaves.leafCount() - first);
+      tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) {
+        const Leaf& source = leaves.leaf(first + i);
+        Leaf& leaf = *batch[i];
+        leaf.setOrigin(source.origin());
+        leaf.setValueMask(source.getValueMask());
+        paint(source.origin(), leaf.buffer().data());
+        leafChecksums[first + i] = leafChecksum(leaf);
+      });
+      for (std::size_t i = 0; i < count; ++i) batch[i]->writeBuffers(out, /*toHalf=*/false);
+    }
+    return valuesChecksum(tree, leafChecksums);
   }
 
   void writeOne(std::ostream& out, const openvdb::GridBase::Ptr& grid,

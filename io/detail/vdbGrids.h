@@ -1,6 +1,8 @@
 #pragma once
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <openvdb/openvdb.h>
@@ -25,10 +27,23 @@ openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& 
 // OpenVDB's message about a damaged file, cut to printable words on one short line.
 std::string readableReason(const std::string& what);
 
+// Paints the 512 values of the leaf at `origin` in OpenVDB's order (z fastest).
+using LeafPainter = std::function<void(const openvdb::Coord& origin, openvdb::Vec3s* values)>;
+
+// Grids written together. A Vec3s grid whose tree has a painter holds only topology (leaves made
+// with PartialCreate, no values): the writer paints its leaves a batch at a time, in parallel, and
+// writes them, so its values are never all held. Such a file lacks only OpenVDB's delayed-loading
+// hints for that grid (which would need the values before they are painted).
+struct GridGroup {
+  GridGroup(openvdb::GridPtrVec grids = {}) : grids(std::move(grids)) {}  // NOLINT: a plain group
+  openvdb::GridPtrVec grids;
+  std::map<const openvdb::TreeBase*, LeafPainter> painters;
+};
+
 // Makes one group of a file's grids when the writer reaches it, so that a large volume's grids are
 // built, written and freed a group at a time. Grids sharing a tree belong to one group (the file
 // stores the tree once); names must be unique and non-empty across the file.
-using GridGroupMaker = std::function<openvdb::GridPtrVec()>;
+using GridGroupMaker = std::function<GridGroup()>;
 
 // Writes grid groups and file metadata to a .vdb (Blosc), the bytes OpenVDB's own writer gives for
 // all the grids at once with each grid's valuesChecksum in its metadata, checking every write: a full disk

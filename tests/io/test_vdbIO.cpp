@@ -1,6 +1,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -264,6 +265,37 @@ TEST(VdbGrids, WritingGroupByGroupGivesOpenVdbsOwnFile) {
   EXPECT_EQ(contents.metadata->metaValue<std::string>("seed"), "3");
   fs::remove(grouped);
   fs::remove(whole);
+}
+
+// A colour that tells voxels and ids apart.
+class CoordinateColoring final : public VolumeColoring {
+public:
+  Rgb at(int x, int y, int z, std::int32_t id) const override {
+    return {float(x) / 256.f, float(y + id) / 256.f, float(z) / 256.f};
+  }
+};
+
+// Colours painted leaf by leaf as they are written read back as the same colours written dense, over
+// more than one batch of leaves and with leaves the box cuts.
+TEST(VdbIO, ColoursPaintedWhileWritingAreTheColoursPaintedDense) {
+  SolidVolume painted;
+  painted.dims = {130, 130, 131};
+  painted.particleId.resize(painted.dims.count());
+  for (std::size_t i = 0; i < painted.particleId.size(); ++i) painted.particleId[i] = std::int32_t(i % 7);
+  painted.coloring = std::make_shared<CoordinateColoring>();
+  SolidVolume dense = painted;
+  paintColor(dense);
+  ASSERT_EQ(dense.color.size(), dense.dims.count());
+  const auto paintedPath = tempPath("painted.vdb"), densePath = tempPath("dense.vdb");
+  writeVdb(paintedPath.string(), painted);
+  writeVdb(densePath.string(), dense);
+  const SolidVolume a = readVdb(paintedPath.string()), b = readVdb(densePath.string());
+  EXPECT_EQ(a.dims, b.dims);
+  EXPECT_TRUE(a.color == b.color);
+  EXPECT_EQ(a.particleId, b.particleId);
+  EXPECT_EQ(a.activeVoxels, b.activeVoxels);
+  fs::remove(paintedPath);
+  fs::remove(densePath);
 }
 
 // A grid with many leaves and a tile, as copyFromDense makes of a volume with a constant block.

@@ -148,7 +148,7 @@ std::pair<double, double> backgroundLuminance(const SolidVolume& volume, int axi
 }
 
 // The background's colour does not change where copies meet. A projection of the photo's
-// background cannot wrap, so it is cross-faded near the faces (paintParticleSolid), which must
+// background cannot wrap, so it is cross-faded near the faces (ParticleColoring), which must
 // neither brighten nor darken it nor change its contrast. The background's mean luminance and its
 // spread in the slab across the face, on each axis and averaged over the three, lie within 4
 // standard deviations of those of the slabs inside; the inside slabs' own spread is the photo's

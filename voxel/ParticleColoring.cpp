@@ -1,4 +1,4 @@
-#include "voxel/paintParticleSolid.h"
+#include "voxel/ParticleColoring.h"
 
 #include <algorithm>
 #include <cmath>
@@ -215,54 +215,57 @@ private:
 
 }  // namespace
 
-SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
-                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic, const TiledMatrix* matrix,
-                               const TiledMatrix* grain) {
-  SolidVolume volume;
-  volume.dims = dims;
-  volume.particleId = std::move(ids);
-  volume.color.resize(dims.count());
-
-  const double pixelsPerVoxel = 1.0 / voxelsPerPixel;
-  Rng rng(deriveSeed(seed, 0xC0102));
-  const Projection background = randomProjection(rng, pixelsPerVoxel);
+struct ParticleColoring::State {
+  ExemplarStats stats;
+  Dims dims;
+  std::vector<ParticlePaint> particles;
+  bool periodic;
+  std::optional<TiledMatrix> matrix, grain;
   std::vector<Projection> projections;
-  projections.reserve(particles.size());
-  for (const ParticlePaint& particle : particles)
-    projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
   std::optional<ParticleGrain> particleGrain;
-  if (grain) particleGrain.emplace(*grain, stats, particles, rng);
-  const cv::Mat filled = matrix ? cv::Mat() : fillParticleHoles(stats);
-  const BackgroundResidual backgroundResidual(filled, background, dims, periodic && !matrix);
+  cv::Mat filled;
+  std::optional<BackgroundResidual> backgroundResidual;
+};
 
-  tbb::parallel_for(0, dims.z, [&](int z) {
-    for (int y = 0; y < dims.y; ++y)
-      for (int x = 0; x < dims.x; ++x) {
-        const std::size_t idx = dims.index(x, y, z);
-        const std::int32_t id = volume.particleId[idx];
-        const Eigen::Vector3d p(x, y, z);
-        if (id == 0) {
-          volume.color[idx] = matrix ? matrix->color[matrix->dims.index(
-                                           x % matrix->dims.x, y % matrix->dims.y, z % matrix->dims.z)]
-                                     : clamp01(stats.backgroundColor + backgroundResidual.at(x, y, z));
-          continue;
-        }
-        const ParticlePaint& particle = particles[std::size_t(id - 1)];
-        const Particle2D& source = stats.particles[std::size_t(particle.source)];
-        const cv::Mat& residual = particleGrain ? particleGrain->shading(particle.source) : source.residual;
-        const Projection& proj = projections[std::size_t(id - 1)];
-        // Project about the particle's centre onto the centre of its photo particle's box.
-        const Eigen::Vector3d local = offsetFrom(particle.centre, p, dims, periodic);
-        const int c = std::clamp(int(residual.cols * 0.5 + local.dot(proj.u)), 0, residual.cols - 1);
-        const int r = std::clamp(int(residual.rows * 0.5 + local.dot(proj.v)), 0, residual.rows - 1);
-        // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
-        cv::Vec3f colour = source.color + residual.at<cv::Vec3f>(r, c);
-        if (particleGrain) colour += particleGrain->at(std::size_t(id - 1), x, y, z);
-        volume.color[idx] = clamp01(colour);
-      }
-  });
-  return volume;
+ParticleColoring::ParticleColoring(const ExemplarStats& stats, Dims dims,
+                                   std::vector<ParticlePaint> particles, double voxelsPerPixel,
+                                   std::uint64_t seed, bool periodic, std::optional<TiledMatrix> matrix,
+                                   std::optional<TiledMatrix> grain) {
+  auto state = std::make_unique<State>(State{
+      stats, dims, std::move(particles), periodic, std::move(matrix), std::move(grain), {}, {}, {}, {}});
+  Rng rng(deriveSeed(seed, 0xC0102));
+  const Projection background = randomProjection(rng, 1.0 / voxelsPerPixel);
+  state->projections.reserve(state->particles.size());
+  for (const ParticlePaint& particle : state->particles)
+    state->projections.push_back(randomProjection(rng, 1.0 / particle.voxelsPerPixel));
+  if (state->grain) state->particleGrain.emplace(*state->grain, state->stats, state->particles, rng);
+  if (!state->matrix) state->filled = fillParticleHoles(state->stats);
+  state->backgroundResidual.emplace(state->filled, background, dims, periodic && !state->matrix);
+  state_ = std::move(state);
+}
+
+ParticleColoring::~ParticleColoring() = default;
+
+Rgb ParticleColoring::at(int x, int y, int z, std::int32_t id) const {
+  const State& s = *state_;
+  if (id == 0) {
+    const TiledMatrix* matrix = s.matrix ? &*s.matrix : nullptr;
+    return matrix
+               ? matrix->color[matrix->dims.index(x % matrix->dims.x, y % matrix->dims.y, z % matrix->dims.z)]
+               : clamp01(s.stats.backgroundColor + s.backgroundResidual->at(x, y, z));
+  }
+  const ParticlePaint& particle = s.particles[std::size_t(id - 1)];
+  const Particle2D& source = s.stats.particles[std::size_t(particle.source)];
+  const cv::Mat& residual = s.particleGrain ? s.particleGrain->shading(particle.source) : source.residual;
+  const Projection& proj = s.projections[std::size_t(id - 1)];
+  // Project about the particle's centre onto the centre of its photo particle's box.
+  const Eigen::Vector3d local = offsetFrom(particle.centre, Eigen::Vector3d(x, y, z), s.dims, s.periodic);
+  const int c = std::clamp(int(residual.cols * 0.5 + local.dot(proj.u)), 0, residual.cols - 1);
+  const int r = std::clamp(int(residual.rows * 0.5 + local.dot(proj.v)), 0, residual.rows - 1);
+  // Outside the photo particle's mask the residual is 0: the voxel keeps the mean colour.
+  cv::Vec3f colour = source.color + residual.at<cv::Vec3f>(r, c);
+  if (s.particleGrain) colour += s.particleGrain->at(std::size_t(id - 1), x, y, z);
+  return clamp01(colour);
 }
 
 }  // namespace solidtex

@@ -1,6 +1,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "common/SolidVolume.h"
@@ -22,14 +24,12 @@ struct TiledMatrix {
   std::vector<Rgb> color;  ///< dims.count(), linear RGB in [0,1], x fastest
 };
 
-/// Colours a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
+/// The colours of a placed particle solid (paper 3.6): each particle voxel gets its source particle's mean
 /// colour plus that particle's own residual, each background voxel the background mean plus the
 /// background residual. Residuals are laid into 3D by parallel projection along an oblique
 /// direction (random per particle), so no axis slice shows them smeared into streaks.
 /// The background's residual is laid at `voxelsPerPixel`, each particle's at the scale it was made at.
-/// `ids` (dims.count(), 0 background, id i is particles[i - 1]) becomes the volume's particle_id grid;
-/// it is taken by value so that callers can move a 512^3 grid in rather than hold two copies.
-/// density is left implicit (1 on particles, as writeVdb writes it).
+/// Particle id i is particles[i - 1], 0 the background.
 /// A periodic volume (a 3D torus) is painted to tile: a particle's residual follows it across the
 /// faces, and the background's is cross-faded near each face with its continuation from the
 /// opposite one, its variance kept.
@@ -40,9 +40,20 @@ struct TiledMatrix {
 /// the shading of a particle's residual is projected (splitResidual: smooth, it draws no stripes);
 /// its grain is the block's deviation, laid at an offset of the particle's own and scaled to its
 /// source's grain spread. Projected whole, the grain draws stripes across every slice but one.
-SolidVolume paintParticleSolid(const ExemplarStats& stats, Dims dims, std::vector<std::int32_t> ids,
-                               const std::vector<ParticlePaint>& particles, double voxelsPerPixel,
-                               std::uint64_t seed, bool periodic = false, const TiledMatrix* matrix = nullptr,
-                               const TiledMatrix* grain = nullptr);
+///
+/// Each voxel's colour depends only on the voxel and its particle id, so a volume keeps this rather
+/// than its colours (12 bytes a voxel): writeVdb paints them leaf by leaf, paintColor all at once.
+class ParticleColoring final : public VolumeColoring {
+public:
+  ParticleColoring(const ExemplarStats& stats, Dims dims, std::vector<ParticlePaint> particles,
+                   double voxelsPerPixel, std::uint64_t seed, bool periodic = false,
+                   std::optional<TiledMatrix> matrix = {}, std::optional<TiledMatrix> grain = {});
+  ~ParticleColoring() override;
+  Rgb at(int x, int y, int z, std::int32_t id) const override;
+
+private:
+  struct State;
+  std::unique_ptr<const State> state_;
+};
 
 }  // namespace solidtex
