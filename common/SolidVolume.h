@@ -23,7 +23,7 @@ public:
 
 /// A solid texture in dense working form, x fastest (Dims::index). Written to .vdb (docs/exports.md) as
 /// `density` (FloatGrid, fog), `color` and `Cd` (Vec3SGrid, linear RGB, active over the whole box;
-/// left out when empty, as for a solid made from a density volume), `particle_id` (Int32Grid),
+/// left out when there are none, as for a solid made from a density volume), `particle_id` (Int32Grid),
 /// `source_position` and `source` (Vec3SGrid) when present.
 struct SolidVolume {
   Dims dims;

@@ -1,3 +1,5 @@
+#include <stdexcept>
+
 #include <tbb/parallel_for.h>
 
 #include "common/SolidVolume.h"
@@ -6,6 +8,8 @@ namespace solidtex {
 
 void paintColor(SolidVolume& volume) {
   if (!volume.coloring || !volume.color.empty()) return;
+  if (volume.particleId.size() != volume.dims.count())
+    throw std::logic_error("paintColor: colours are painted from the particle ids, which it lacks");
   const Dims d = volume.dims;
   const VolumeColoring& coloring = *volume.coloring;
   volume.color.resize(d.count());

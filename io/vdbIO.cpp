@@ -148,8 +148,9 @@ openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
 }
 
 // The grids in groups, each consuming its dense arrays when the writer reaches it and freed once
-// written. Colour goes first: its tree (12 bytes a voxel) is built while only the dense ids (4) are
-// left beside it, and the ids' and density's trees come after it is gone.
+// written. Colour goes first, beside only the dense ids (4 bytes a voxel): its tree (12 bytes a voxel
+// when the colours are dense, topology only when they are painted as written), and the ids' and
+// density's trees come after it is gone.
 std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
   // A region of a larger volume keeps its index space from 0 and is placed by its transform.

@@ -60,6 +60,8 @@ struct ParticleSolidOptions {
   std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
   std::uint64_t seed = 1;
   bool meshes = false;  ///< also mesh each particle's surface (ParticleSolid::meshes)
+  /// The caller will paint every colour at once (exports, numpy arrays): the memory check counts it.
+  bool denseColor = false;
 };
 
 /// How one texture of the solid was made: synthesized (a tiled block of `block` voxels) or projected,
@@ -118,11 +120,13 @@ ParticleSolid makeParticleSolid(const cv::Mat& photoSrgb, const std::string& nam
 
 /// Peak resident memory, in bytes, of making and writing a particle solid of `dims` whose particles are
 /// placed in a block of `placed` voxels (larger by the open boundary's margin). Measured on gravel
-/// from 96^3 to 512^3 (docs/performance.md): placing holds 10.3 bytes per placed voxel (the field's
-/// keys and bucket entries, the occupancy bits) and the ids, 4 per voxel; painting and writing 20.5
-/// per voxel (the colours, then their grid beside the id and density grids); every run 200 MiB.
+/// from 96^3 to 512^3 (docs/performance.md): placing holds 7.6 bytes per placed voxel (the field's
+/// keys and bucket entries, the occupancy bits) and the ids, 4 per voxel; writing 8.2 per voxel
+/// (the ids while the colours are painted leaf by leaf, then the id and density grids), or 19 with
+/// `denseColor` (the colours, their grid and an export's 8-bit copy beside the ids); every run 200 MiB.
 /// The `delaunay` placer's triangulation adds 49 bytes per placed voxel.
-double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer);
+double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer,
+                              bool denseColor = false);
 
 /// The largest edge a volume may have; beyond it memory, not patience, runs out.
 constexpr int kMaxVolumeEdge = 2048;

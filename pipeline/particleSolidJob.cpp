@@ -44,6 +44,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   ProgressLine line(job.progress);
   ParticleSolidOptions options = job;
   options.meshes = job.meshPath.has_value();
+  options.denseColor = job.exports.tiff || job.exports.npy || job.exports.vti;
   ParticleSolidBuilder builder(
       options, [&](const std::string& step, double fraction) { line.update(step, fraction); });
   OutputFiles outputs;
@@ -67,7 +68,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   if (job.meshPath) written["meshes"] = meshReport(outputs, *job.meshPath, solid.meshes);
   if (job.preview) written["previews"] = writePreviews(outputs, *job.preview, photo, solid.volume);
   // Exports are dense arrays: their colours are painted whole, which the .vdb alone does not need.
-  if (job.exports.tiff || job.exports.npy || job.exports.vti) paintColor(solid.volume);
+  if (options.denseColor) paintColor(solid.volume);
   // A voxel is 1 / scale of the photo's pixels, whose size in µm a user may know.
   const auto exported =
       writeVolumeExports(outputs, job.exports, solid.volume, {1 / solid.voxelsPerPixel, "pixel"});

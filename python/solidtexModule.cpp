@@ -243,6 +243,7 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   Keywords keywords("particles", kwargs);
   ParticleSolidOptions options;
   runParsing([&] { options = particleSolidOptions(keywords); });
+  options.denseColor = true;  // the colours come back as one array
   const int threads = int(keywords.integer("threads").value_or(0));
   const std::optional<std::string> output = keywords.path("output"), reportPath = keywords.path("report");
   const bool progress = keywords.flag("progress").value_or(false);

@@ -68,6 +68,7 @@ std::uint64_t checksumOf(const GridT& grid) {
 
 std::optional<std::uint64_t> valuesChecksum(const openvdb::GridBase& grid) {
   std::optional<std::uint64_t> checksum;
+  if (grid.saveFloatAsHalf()) return checksum;  // its values are read back rounded
   grid.apply<openvdb::TypeList<openvdb::FloatGrid, openvdb::Int32Grid, openvdb::Vec3SGrid>>(
       [&](const auto& typed) { checksum = checksumOf(typed); });
   return checksum;

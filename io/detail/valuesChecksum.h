@@ -13,7 +13,8 @@ namespace solidtex::io::detail {
 inline constexpr const char* kValuesChecksumName = "solidtex_values_checksum";
 
 // A 64-bit checksum of a float, int32 or Vec3s grid's topology and active values (leaves hashed in
-// parallel, combined in tree order: the same at any thread count); nullopt for other grid types.
+// parallel, combined in tree order: the same at any thread count); nullopt for other grid types
+// and for grids saved as half floats.
 std::optional<std::uint64_t> valuesChecksum(const openvdb::GridBase& grid);
 
 // The same checksum built from its parts, for a writer that makes a grid's leaves a batch at a

@@ -39,7 +39,8 @@ constexpr std::streamoff kUuidOffset = 21;
 constexpr std::size_t kUuidLength = 36;
 
 /// Replaces the random UUID by one hashed (FNV-1a, two seeds) from the rest of the file, so the
-/// same volume gives the same bytes.
+/// same volume gives the same bytes. It is a version-8 UUID (RFC 9562's own format), which OpenVDB's
+/// random version-4 ones never are: a file re-saved by another tool is told from solidtex's own.
 void stampContentUuid(const std::filesystem::path& file) {
   std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
   if (!io.is_open())
@@ -62,7 +63,8 @@ void stampContentUuid(const std::filesystem::path& file) {
   io.clear();
   char text[kUuidLength + 1];
   std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32),
-                unsigned(hash[0] >> 16) & 0xffffu, unsigned(hash[0]) & 0xffffu, unsigned(hash[1] >> 48),
+                unsigned(hash[0] >> 16) & 0xffffu, 0x8000u | (unsigned(hash[0]) & 0x0fffu),
+                0x8000u | (unsigned(hash[1] >> 48) & 0x3fffu),
                 (unsigned long long)(hash[1] & 0xffffffffffffull));
   io.seekp(kUuidOffset);
   io.write(text, std::streamsize(kUuidLength));
@@ -87,8 +89,11 @@ std::string gridsSharing(const openvdb::GridBase& grid, const openvdb::GridPtrVe
   return names + (count > 1 ? " grids" : " grid");
 }
 
-// Every grid that carries solidtex's checksum must still have the values it was written with (a
-// tree shared by several grids is checked once).
+bool stampedBySolidtex(const std::string& uuid) { return uuid.size() == kUuidLength && uuid[14] == '8'; }
+
+// Every grid of a file solidtex wrote that carries its checksum must still have the values it was
+// written with (a tree shared by several grids is checked once). A file another tool re-saved keeps
+// the grids' metadata, checksums included, but has its own UUID: its values may have been edited.
 void checkValues(const std::string& path, const openvdb::GridPtrVec& grids) {
   std::map<const openvdb::TreeBase*, std::optional<std::uint64_t>> checksums;
   for (const auto& grid : grids) {
@@ -125,8 +130,8 @@ std::string readableReason(const std::string& what) {
 }
 
 // OpenVDB's own file writer does not check the stream it writes, and wants every grid at once:
-// this one writes the same bytes (a seekable archive) group by group, to a stream whose every
-// failure is seen.
+// this one writes the same bytes (a seekable archive; each grid with its checksum) group by group,
+// to a stream whose every failure is seen.
 class CheckedArchive : public openvdb::io::Archive {
 public:
   void writeTo(std::ostream& out, const std::vector<GridGroupMaker>& groups,
@@ -183,7 +188,8 @@ private:
       std::ostream& out, const openvdb::GridBase::Ptr& grid, const LeafPainter& paint,
       std::map<const openvdb::TreeBase*, openvdb::io::GridDescriptor>& writtenTrees) const {
     const auto typed = openvdb::GridBase::grid<openvdb::Vec3SGrid>(grid);
-    if (!typed) throw std::logic_error("writeVdbGrids: only Vec3s grids are painted");
+    if (!typed || grid->saveFloatAsHalf())
+      throw std::logic_error("writeVdbGrids: only Vec3s grids saved as floats are painted");
     openvdb::io::GridDescriptor descriptor(grid->getName(), grid->type(), grid->saveFloatAsHalf());
     descriptor.writeHeader(out);
     const std::streampos offsets = out.tellp();
@@ -192,7 +198,12 @@ private:
     setGridCompression(out, *grid);
     const std::string placeholder(16, '?');
     const openvdb::GridBase::Ptr copy = grid->copyGrid();
-    copy->addStatsMetadata();  // from the topology: bounds, voxel count and memory
+    copy->addStatsMetadata();  // from the topology: bounds and voxel count
+    // The memory the grid takes once read: its leaves' values too, which this tree does not hold.
+    const auto leafValueBytes = std::int64_t(typed->tree().leafCount() *
+                                             openvdb::Vec3STree::LeafNodeType::SIZE * sizeof(openvdb::Vec3s));
+    copy->insertMeta(openvdb::GridBase::META_FILE_MEM_BYTES,
+                     openvdb::Int64Metadata(std::int64_t(grid->memUsage()) + leafValueBytes));
     copy->insertMeta(
         openvdb::GridBase::META_FILE_COMPRESSION,
         openvdb::StringMetadata(openvdb::io::compressionToString(openvdb::io::getDataCompression(out))));
@@ -200,6 +211,8 @@ private:
     std::ostringstream meta;
     copy->writeMeta(meta);
     const std::string metaBytes = meta.str();
+    if (metaBytes.find(placeholder) == std::string::npos)
+      throw std::logic_error("writeVdbGrids: no checksum placeholder in the grid's metadata");
     const std::streampos checksumAt = out.tellp() + std::streamoff(metaBytes.find(placeholder));
     out.write(metaBytes.data(), std::streamsize(metaBytes.size()));
     grid->writeTransform(out);
@@ -286,6 +299,7 @@ VdbContents readVdbGrids(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError("cannot read " + path + ": it is a folder");
   checkVdbLayout(path);
   VdbContents contents;
+  bool stamped = false;
   // OpenVDB prints warnings on damaged files ("multi-buffer trees are no longer supported"): the
   // command's error, if any, is the one line.
   detail::CapturedStderr libraryOutput;
@@ -295,6 +309,7 @@ VdbContents readVdbGrids(const std::string& path) {
     file.open(/*delayLoad=*/false);
     contents.grids = *file.getGrids();
     contents.metadata = file.getMetadata();
+    stamped = stampedBySolidtex(file.getUniqueTag());
     file.close();
   } catch (const std::bad_alloc&) {
     throw InputError("cannot read " + path + ": damaged (a size in it asks for more memory than there is)");
@@ -304,7 +319,7 @@ VdbContents readVdbGrids(const std::string& path) {
   }
   for (const auto& grid : contents.grids)
     if (!grid) throw InputError("cannot read " + path + ": damaged (a grid could not be read)");
-  checkValues(path, contents.grids);
+  if (stamped) checkValues(path, contents.grids);
   return contents;
 }
 

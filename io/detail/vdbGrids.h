@@ -17,8 +17,8 @@ struct VdbContents {
 
 // Reads a whole .vdb at once: without delayed loading, damage is found while reading, not later
 // when the grids are destroyed. Anything OpenVDB refuses, or memory a damaged size asks for, is
-// one InputError naming the file, with OpenVDB's reason cut to a readable line; so is a grid whose
-// values no longer match the checksum writeVdbGrids put in its metadata.
+// one InputError naming the file, with OpenVDB's reason cut to a readable line; so is a grid, in a
+// file writeVdbGrids wrote (its UUID says so), whose values no longer match their checksum.
 VdbContents readVdbGrids(const std::string& path);
 
 // The grid named `name`, or null.
@@ -46,10 +46,10 @@ struct GridGroup {
 using GridGroupMaker = std::function<GridGroup()>;
 
 // Writes grid groups and file metadata to a .vdb (Blosc), the bytes OpenVDB's own writer gives for
-// all the grids at once with each grid's valuesChecksum in its metadata, checking every write: a full disk
-// throws InputError, never leaves a truncated file behind a success. The header's UUID is hashed from the
-// content, so the same grids give the same bytes. Commands write through OutputFiles, which puts the file in
-// place only when all their outputs are written.
+// all the grids at once with each grid's valuesChecksum in its metadata (painted grids aside),
+// checking every write: a full disk throws InputError, never leaves a truncated file behind a
+// success. The header's UUID is hashed from the content, so the same grids give the same bytes. Commands
+// write through OutputFiles, which puts the file in place only when all their outputs are written.
 void writeVdbGrids(const std::string& path, const std::vector<GridGroupMaker>& groups,
                    const openvdb::MetaMap& meta = {});
 

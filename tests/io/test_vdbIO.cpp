@@ -326,17 +326,27 @@ TEST(ValuesChecksum, SeesOneValueOneVoxelAndOneTileChange) {
   EXPECT_FALSE(io::detail::valuesChecksum(*openvdb::BoolGrid::create()));
 }
 
-// A grid whose values were changed after solidtex wrote it (here by OpenVDB's own writer, keeping
-// the metadata; in practice by damage that still decodes) is refused, naming the grid.
+// A grid whose values changed in a file solidtex wrote is refused, naming the grid: here the damage
+// is made by OpenVDB's own writer with solidtex's UUID put back, in practice it is damage that still
+// decodes. The same file with the UUID OpenVDB gave it was re-saved by another tool, its values
+// perhaps edited on purpose, and is read.
 TEST(VdbGrids, ValuesThatNoLongerMatchTheirChecksumAreRefused) {
   openvdb::initialize();
   const auto path = tempPath("checksum.vdb");
   io::detail::writeVdbGrids(path.string(), openvdb::GridPtrVec{leavesAndATile()});
+  const std::string uuid = bytesOf(path).substr(21, 36);
+  EXPECT_EQ(uuid[14], '8');  // version 8: solidtex's own
   auto read = io::detail::readVdbGrids(path.string());
   auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(read.grids.at(0));
   ASSERT_TRUE(grid->getMetadata<openvdb::StringMetadata>(io::detail::kValuesChecksumName));
   grid->tree().setValue(openvdb::Coord(1, 1, 0), -1.f);
   openvdb::io::File(path.string()).write(openvdb::GridPtrVec{grid});
+  EXPECT_EQ(io::detail::readVdbGrids(path.string()).grids.size(), 1u);
+  {
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(21);
+    file.write(uuid.data(), std::streamsize(uuid.size()));
+  }
   try {
     io::detail::readVdbGrids(path.string());
     ADD_FAILURE() << "changed values were read";

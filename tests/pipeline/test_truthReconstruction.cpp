@@ -24,7 +24,8 @@ class ReconstructionOfATruth : public testing::TestWithParam<TruthCase> {};
 
 // A photo cut from a known 3D truth, rebuilt at 128^3 by default and as the paper does (box sizing,
 // best fit, sharp hulls): the default must match the photo's section areas and the truth's particle
-// volumes, beat the paper on section shapes and arrangement, and be no worse on sizes.
+// volumes, beat the paper on section shapes and arrangement, and size particles no worse than it
+// beyond the seed-to-seed spread.
 TEST_P(ReconstructionOfATruth, DefaultsMatchThePhotoAndTheTruthBetterThanThePaper) {
   const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / GetParam().name;
   fs::remove_all(dir);
