@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <new>
+#include <optional>
 #include <system_error>
 #include <vector>
 
@@ -264,26 +265,80 @@ void checkBox(const std::string& path, const openvdb::CoordBBox& box, std::size_
                 double(box.volume()) * double(bytesPerVoxel));
 }
 
+// What a grid's writer recorded of it (OpenVDB's file statistics), for a grid not read.
+template <typename T>
+std::optional<T> recorded(const io::detail::VdbContents& contents, const std::string& name,
+                          const std::string& key) {
+  for (const auto& grid : contents.unread)
+    if (grid->getName() == name)
+      if (const auto meta = grid->getMetadata<openvdb::TypedMetadata<T>>(key)) return meta->value();
+  return std::nullopt;
+}
+
+// The active box of a grid, from its tree or from its recorded statistics; nullopt when neither.
+std::optional<openvdb::CoordBBox> activeBox(const io::detail::VdbContents& contents,
+                                            const std::string& name) {
+  if (const auto grid = io::detail::findGrid(contents, name)) return grid->evalActiveVoxelBoundingBox();
+  const auto lo = recorded<openvdb::Vec3i>(contents, name, openvdb::GridBase::META_FILE_BBOX_MIN);
+  const auto hi = recorded<openvdb::Vec3i>(contents, name, openvdb::GridBase::META_FILE_BBOX_MAX);
+  if (lo && hi) return openvdb::CoordBBox(openvdb::Coord(*lo), openvdb::Coord(*hi));
+  return std::nullopt;
+}
+
+std::uint64_t activeVoxelCount(const io::detail::VdbContents& contents, const std::string& name) {
+  if (const auto grid = io::detail::findGrid(contents, name)) return grid->activeVoxelCount();
+  return std::uint64_t(
+      recorded<openvdb::Int64>(contents, name, openvdb::GridBase::META_FILE_VOXEL_COUNT).value_or(0));
+}
+
+bool unread(const io::detail::VdbContents& contents, const std::string& name) {
+  return std::any_of(contents.unread.begin(), contents.unread.end(),
+                     [&](const auto& grid) { return grid->getName() == name; });
+}
+
+// The grids readVdb makes dense. Those it does not still give the box (density and colour): a
+// writer that recorded no box for one has it read after all.
+io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& options) {
+  std::vector<std::string> names;
+  for (const auto& [wanted, name] : {std::pair{options.density, "density"}, std::pair{options.color, "color"},
+                                     std::pair{options.particleId, "particle_id"}})
+    if (wanted) names.emplace_back(name);
+  io::detail::VdbContents contents = io::detail::readVdbGrids(path, names);
+  const std::size_t wanted = names.size();
+  for (const char* name : {"density", "color"})
+    if (unread(contents, name) && !activeBox(contents, name)) names.emplace_back(name);
+  return names.size() == wanted ? contents : io::detail::readVdbGrids(path, names);
+}
+
+// Copies a grid into `out` over the box and lets its tree go.
+template <typename GridT, typename Value>
+void takeDense(typename GridT::Ptr& grid, const openvdb::CoordBBox& box, std::vector<Value>& out) {
+  if (grid) denseFrom(*grid, box, out);
+  grid.reset();
+}
+
 }  // namespace
 
-SolidVolume readVdb(const std::string& path) {
-  const io::detail::VdbContents contents = io::detail::readVdbGrids(path);
-  const auto density = typedGrid<openvdb::FloatGrid>(contents, path, "density", "float");
-  const auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
-  const auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
+SolidVolume readVdb(const std::string& path, const VdbReadOptions& options) {
+  io::detail::VdbContents contents = gridsFor(path, options);
   openvdb::CoordBBox box;
-  if (density) box.expand(density->evalActiveVoxelBoundingBox());
-  if (color) box.expand(color->evalActiveVoxelBoundingBox());
+  for (const char* name : {"density", "color"})
+    box.expand(activeBox(contents, name).value_or(openvdb::CoordBBox()));
   if (box.empty()) throw InputError("cannot read " + path + ": no density or color grid with active voxels");
+  SolidVolume volume;
+  volume.activeVoxels = std::max(activeVoxelCount(contents, "density"), activeVoxelCount(contents, "color"));
+  auto density = typedGrid<openvdb::FloatGrid>(contents, path, "density", "float");
+  auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
+  auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
+  contents.grids.clear();
+  if (!options.density) density.reset();
+  if (!options.color) color.reset();
   checkBox(path, box,
            (density ? sizeof(float) : 0) + (color ? sizeof(Rgb) : 0) + (ids ? sizeof(std::int32_t) : 0));
-  SolidVolume volume;
   volume.dims = {box.dim().x(), box.dim().y(), box.dim().z()};
-  volume.activeVoxels =
-      std::max(density ? density->activeVoxelCount() : 0, color ? color->activeVoxelCount() : 0);
-  if (density) denseFrom(*density, box, volume.density);
-  if (color) denseFrom(*color, box, volume.color);
-  if (ids) denseFrom(*ids, box, volume.particleId);
+  takeDense<openvdb::FloatGrid>(density, box, volume.density);
+  takeDense<openvdb::Vec3SGrid>(color, box, volume.color);
+  takeDense<openvdb::Int32Grid>(ids, box, volume.particleId);
   for (auto it = contents.metadata->beginMeta(); it != contents.metadata->endMeta(); ++it)
     volume.metadata[it->first] = it->second->str();
   checkValues(path, volume);

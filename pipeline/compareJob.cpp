@@ -20,6 +20,10 @@
 namespace solidtex {
 namespace {
 
+// What the particle measures read of a solid: their ids, not the colour that would take four
+// times their memory.
+constexpr VdbReadOptions kParticleIdsOnly{false, false, true};
+
 double scaleOf(const CompareJob& job, const SolidVolume& volume) {
   if (job.voxelsPerPixel > 0) return job.voxelsPerPixel;
   const auto it = volume.metadata.find("voxels_per_pixel");
@@ -69,7 +73,7 @@ double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
 nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale,
                                 const SectionStatistics& solidSections, SectionOptions sectionOptions,
                                 double diameter) {
-  const SolidVolume truth = readVdb(truthPath);
+  const SolidVolume truth = readVdb(truthPath, kParticleIdsOnly);
   if (truth.particleId.empty())
     throw InputError(truthPath + " has no particle_id grid: not a particle solid");
   const double truthScale = truthScaleOf(truthPath, truth);
@@ -226,7 +230,9 @@ nlohmann::json runCompare(const CompareJob& job) {
     if (input) outputs.addInput(*input);
   if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
   addReport(outputs, job.report);
-  const SolidVolume volume = readVdb(job.volume);
+  SolidVolume volume =
+      readVdb(job.volume, job.mode == CompareMode::Continuous ? VdbReadOptions{} : kParticleIdsOnly);
+  if (!comparesParticles(job, volume)) volume = readVdb(job.volume);
   const cv::Mat photo = loadPhoto(job.photo);
   const cv::Mat reference =
       job.reference && !comparesParticles(job, volume) ? loadPhoto(*job.reference) : cv::Mat();

@@ -292,7 +292,7 @@ void writeVdbGrids(const std::string& path, const openvdb::GridPtrVec& grids, co
   writeVdbGrids(path, {[&grids] { return grids; }}, meta);
 }
 
-VdbContents readVdbGrids(const std::string& path) {
+VdbContents readVdbGrids(const std::string& path, const std::vector<std::string>& only) {
   openvdb::initialize();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError("cannot read " + path + ": no such file");
@@ -307,7 +307,14 @@ VdbContents readVdbGrids(const std::string& path) {
     const MemoryCap cap(readingAllowance(path));
     openvdb::io::File file(path);
     file.open(/*delayLoad=*/false);
-    contents.grids = *file.getGrids();
+    if (only.empty()) contents.grids = *file.getGrids();
+    for (const std::string& name : only)
+      if (file.hasGrid(name)) contents.grids.push_back(file.readGrid(name));
+    const openvdb::GridPtrVecPtr described = only.empty() ? nullptr : file.readAllGridMetadata();
+    if (described)
+      for (const auto& grid : *described)
+        if (std::find(only.begin(), only.end(), grid->getName()) == only.end())
+          contents.unread.push_back(grid);
     contents.metadata = file.getMetadata();
     stamped = stampedBySolidtex(file.getUniqueTag());
     file.close();

@@ -13,13 +13,15 @@ namespace solidtex::io::detail {
 struct VdbContents {
   openvdb::GridPtrVec grids;
   openvdb::MetaMap::Ptr metadata;
+  openvdb::GridPtrVec unread;  ///< the grids left out, with their metadata and empty trees
 };
 
 // Reads a whole .vdb at once: without delayed loading, damage is found while reading, not later
 // when the grids are destroyed. Anything OpenVDB refuses, or memory a damaged size asks for, is
 // one InputError naming the file, with OpenVDB's reason cut to a readable line; so is a grid, in a
 // file writeVdbGrids wrote (its UUID says so), whose values no longer match their checksum.
-VdbContents readVdbGrids(const std::string& path);
+// `only`: the names of the grids to read, those of them the file has; empty: every grid.
+VdbContents readVdbGrids(const std::string& path, const std::vector<std::string>& only = {});
 
 // The grid named `name`, or null.
 openvdb::GridBase::Ptr findGrid(const VdbContents& contents, const std::string& name);

@@ -50,6 +50,41 @@ TEST(VdbIO, RoundTripKeepsGridsAndMetadata) {
   fs::remove(path);
 }
 
+// Measures of particle ids read neither the colour nor the density; the box is still the whole
+// volume's (here the colour's, the density being active at one voxel), from the grids' recorded
+// bounds, or from their trees when a writer recorded none.
+TEST(VdbIO, ReadsOnlyTheGridsAskedFor) {
+  const auto path = tempPath("idsonly.vdb");
+  const SolidVolume v = smallParticleVolume();
+  writeVdb(path.string(), v);
+  const SolidVolume ids = readVdb(path.string(), {.density = false, .color = false, .particleId = true});
+  EXPECT_EQ(ids.dims, v.dims);
+  EXPECT_EQ(ids.particleId, v.particleId);
+  EXPECT_TRUE(ids.density.empty());
+  EXPECT_TRUE(ids.color.empty());
+  EXPECT_EQ(ids.metadata.at("seed"), "42");
+
+  openvdb::initialize();
+  openvdb::GridPtrVec grids;
+  {
+    openvdb::io::File file(path.string());
+    file.open();
+    grids = *file.getGrids();
+  }
+  for (const auto& grid : grids) {
+    grid->removeMeta(openvdb::GridBase::META_FILE_BBOX_MIN);
+    grid->removeMeta(openvdb::GridBase::META_FILE_BBOX_MAX);
+  }
+  openvdb::io::File rewritten(path.string());
+  rewritten.setGridStatsMetadataEnabled(false);
+  rewritten.write(grids);
+  const SolidVolume unrecorded =
+      readVdb(path.string(), {.density = false, .color = false, .particleId = true});
+  EXPECT_EQ(unrecorded.dims, v.dims);
+  EXPECT_EQ(unrecorded.particleId, v.particleId);
+  fs::remove(path);
+}
+
 // Grids are built one slab of 8 z-layers at a time, each slab's whole pages handed back as it goes:
 // several slabs, a short last one, and layers of more than a page each come back voxel for voxel.
 TEST(VdbIO, RoundTripOfManySlabsIsExact) {
