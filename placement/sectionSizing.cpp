@@ -90,7 +90,8 @@ std::vector<int> samplesPerClass(const std::vector<SectionSample>& samples, int 
   return count;
 }
 
-// KS between the photo's areas and the sections predicted for 3D class shares x at `factor`.
+// KS between the photo's areas and the sections predicted for 3D class shares x at `factor`. The
+// samples come sorted by area, so the predicted sections do too: a factor scales every area alike.
 double predictedKs(const std::vector<SectionSample>& samples, const std::vector<int>& perClass,
                    double minArea, double factor, const Eigen::VectorXd& x,
                    const std::vector<std::pair<double, double>>& photo) {
@@ -99,7 +100,6 @@ double predictedKs(const std::vector<SectionSample>& samples, const std::vector<
     if (x[c] > 0) predicted.emplace_back(area, x[c] * weight);
   });
   if (predicted.empty() || photo.empty()) return 1;
-  std::sort(predicted.begin(), predicted.end());
   double total = 0, photoTotal = 0;
   for (const auto& p : predicted) total += p.second;
   for (const auto& p : photo) photoTotal += p.second;
@@ -336,8 +336,9 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
                                double voxelsPerPixel, std::uint64_t seed, int bootstraps) {
   const AreaClasses classes = areaClassesOf(stats);
   const PhotoSections photo = photoSectionsOf(stats, classes);
-  const std::vector<SectionSample> samples =
-      sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
+  std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const SectionSample& a, const SectionSample& b) { return a.area < b.area; });
   const Fit fit = smallestGoodFit(samples, classes, stats.minArea, photo);
   SectionSizing sizing;
   if (bootstraps > 0)
