@@ -331,6 +331,10 @@ SolidVolume readVdb(const std::string& path, const VdbReadOptions& options) {
   auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
   auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
   contents.grids.clear();
+  // Recorded bounds can be edited apart from the values: ids outside them would be dropped unseen.
+  if (ids && !box.isInside(ids->evalActiveVoxelBoundingBox()))
+    throw InputError("cannot read " + path +
+                     ": damaged (its particle ids lie outside the bounds of its density and color grids)");
   if (!options.density) density.reset();
   if (!options.color) color.reset();
   checkBox(path, box,

@@ -85,6 +85,26 @@ TEST(VdbIO, ReadsOnlyTheGridsAskedFor) {
   fs::remove(path);
 }
 
+TEST(VdbIO, IdsOutsideTheRecordedBoundsAreRefused) {
+  const auto path = tempPath("shrunkbounds.vdb");
+  writeVdb(path.string(), smallParticleVolume());  // particle 7 at (2, 1, 1)
+  openvdb::initialize();
+  openvdb::GridPtrVec grids;
+  {
+    openvdb::io::File file(path.string());
+    file.open();
+    grids = *file.getGrids();
+  }
+  for (const auto& grid : grids)
+    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(openvdb::Vec3i(1, 1, 1)));
+  openvdb::io::File rewritten(path.string());
+  rewritten.setGridStatsMetadataEnabled(false);
+  rewritten.write(grids);
+  EXPECT_THROW(readVdb(path.string(), {.density = false, .color = false, .particleId = true}), InputError);
+  EXPECT_EQ(readVdb(path.string()).dims, smallParticleVolume().dims);  // the trees' own bounds
+  fs::remove(path);
+}
+
 // Grids are built one slab of 8 z-layers at a time, each slab's whole pages handed back as it goes:
 // several slabs, a short last one, and layers of more than a page each come back voxel for voxel.
 TEST(VdbIO, RoundTripOfManySlabsIsExact) {
