@@ -223,6 +223,12 @@ nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const S
                                         : compareContinuous(job, photo, volume, reference, plot);
 }
 
+SolidVolume readSolidToCompare(const std::string& path, CompareMode mode) {
+  if (mode == CompareMode::Continuous) return readVdb(path);
+  SolidVolume volume = readVdb(path, kParticleIdsOnly);
+  return mode == CompareMode::Auto && volume.particleId.empty() ? readVdb(path) : volume;
+}
+
 nlohmann::json runCompare(const CompareJob& job) {
   OutputFiles outputs;
   for (const auto& input : {std::optional(job.photo), std::optional(job.volume), job.truth, job.reference,
@@ -230,9 +236,7 @@ nlohmann::json runCompare(const CompareJob& job) {
     if (input) outputs.addInput(*input);
   if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
   addReport(outputs, job.report);
-  SolidVolume volume =
-      readVdb(job.volume, job.mode == CompareMode::Continuous ? VdbReadOptions{} : kParticleIdsOnly);
-  if (!comparesParticles(job, volume)) volume = readVdb(job.volume);
+  const SolidVolume volume = readSolidToCompare(job.volume, job.mode);
   const cv::Mat photo = loadPhoto(job.photo);
   const cv::Mat reference =
       job.reference && !comparesParticles(job, volume) ? loadPhoto(*job.reference) : cv::Mat();

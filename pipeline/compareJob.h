@@ -44,6 +44,10 @@ struct CompareJob {
 nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
                             const cv::Mat& reference, cv::Mat* plot = nullptr);
 
+/// Reads a solid to compare in `mode`: a particle solid's ids alone (the particle measures use no
+/// colour, which would take four times their memory), every grid of a continuous one.
+SolidVolume readSolidToCompare(const std::string& path, CompareMode mode);
+
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runCompare(const CompareJob& job);
 

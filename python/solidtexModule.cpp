@@ -560,7 +560,13 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   keywords.take("reference");
   keywords.finish();
   const cv::Mat image = photoOf(photo, job.photo);
-  const SolidVolume volume = solidOf(solid, job.volume);
+  SolidVolume volume;
+  if (const std::optional<std::string> path = asPath(solid)) {
+    job.volume = *path;
+    runReleased([&] { volume = readSolidToCompare(*path, job.mode); });
+  } else {
+    volume = solidOf(solid, job.volume);
+  }
   cv::Mat reference;
   if (!referenceArgument.is_none()) {
     std::string name;
