@@ -1,6 +1,6 @@
 // .vdb bytes -> readVdb, whole and as compare reads a particle solid (its ids, the box from the
-// other grids' recorded bounds). A clean refusal (InputError) is the expected outcome for broken files; any
-// other exception, crash, sanitizer report or out-of-memory is a finding.
+// other grids' recorded bounds). A clean refusal (InputError) is the expected outcome for broken
+// files; any other exception, crash, sanitizer report or out-of-memory is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <string>
