@@ -254,35 +254,44 @@ typename GridT::Ptr typedGrid(const io::detail::VdbContents& contents, const std
 
 // The dense box must be one a volume can have and memory can hold: a damaged file can claim any.
 void checkBox(const std::string& path, const openvdb::CoordBBox& box, std::size_t bytesPerVoxel) {
-  constexpr int kLongestSide = 32768;
-  const openvdb::Coord side = box.dim();
-  if (side.x() > kLongestSide || side.y() > kLongestSide || side.z() > kLongestSide)
-    throw InputError("cannot read " + path + ": its grids span " + std::to_string(side.x()) + "x" +
-                     std::to_string(side.y()) + "x" + std::to_string(side.z()) + " voxels, more than " +
+  constexpr std::int64_t kLongestSide = 32768;
+  // In 64 bits: a box from -2^30 to 2^30 would overflow dim()'s int32 to a negative side.
+  const auto side = [&](int axis) { return std::int64_t(box.max()[axis]) - box.min()[axis] + 1; };
+  const std::int64_t x = side(0), y = side(1), z = side(2);
+  const std::string sides = std::to_string(x) + "x" + std::to_string(y) + "x" + std::to_string(z);
+  if (std::min({x, y, z}) < 1 || std::max({x, y, z}) > kLongestSide)
+    throw InputError("cannot read " + path + ": its grids span " + sides + " voxels, not 1 to " +
                      std::to_string(kLongestSide) + " on a side");
-  requireMemory("reading " + path + " (" + std::to_string(side.x()) + "x" + std::to_string(side.y()) + "x" +
-                    std::to_string(side.z()) + " voxels)",
-                double(box.volume()) * double(bytesPerVoxel));
+  requireMemory("reading " + path + " (" + sides + " voxels)",
+                double(x) * double(y) * double(z) * double(bytesPerVoxel));
 }
 
-// What a grid's writer recorded of it (OpenVDB's file statistics), for a grid not read.
+openvdb::GridBase::Ptr unreadGrid(const io::detail::VdbContents& contents, const std::string& name) {
+  for (const auto& grid : contents.unread)
+    if (grid->getName() == name) return grid;
+  return nullptr;
+}
+
+// What a grid's writer recorded of it (OpenVDB's file statistics), for a grid not read: the first
+// grid of that name, as findGrid takes it.
 template <typename T>
 std::optional<T> recorded(const io::detail::VdbContents& contents, const std::string& name,
                           const std::string& key) {
-  for (const auto& grid : contents.unread)
-    if (grid->getName() == name)
-      if (const auto meta = grid->getMetadata<openvdb::TypedMetadata<T>>(key)) return meta->value();
+  const auto grid = unreadGrid(contents, name);
+  if (!grid) return std::nullopt;
+  if (const auto meta = grid->getMetadata<openvdb::TypedMetadata<T>>(key)) return meta->value();
   return std::nullopt;
 }
 
-// The active box of a grid, from its tree or from its recorded statistics; nullopt when neither.
+// The active box of a grid, from its tree or from its recorded statistics; nullopt when neither
+// (or when what was recorded is no box).
 std::optional<openvdb::CoordBBox> activeBox(const io::detail::VdbContents& contents,
                                             const std::string& name) {
   if (const auto grid = io::detail::findGrid(contents, name)) return grid->evalActiveVoxelBoundingBox();
   const auto lo = recorded<openvdb::Vec3i>(contents, name, openvdb::GridBase::META_FILE_BBOX_MIN);
   const auto hi = recorded<openvdb::Vec3i>(contents, name, openvdb::GridBase::META_FILE_BBOX_MAX);
-  if (lo && hi) return openvdb::CoordBBox(openvdb::Coord(*lo), openvdb::Coord(*hi));
-  return std::nullopt;
+  if (!lo || !hi || (*lo)[0] > (*hi)[0] || (*lo)[1] > (*hi)[1] || (*lo)[2] > (*hi)[2]) return std::nullopt;
+  return openvdb::CoordBBox(openvdb::Coord(*lo), openvdb::Coord(*hi));
 }
 
 std::uint64_t activeVoxelCount(const io::detail::VdbContents& contents, const std::string& name) {
@@ -291,14 +300,10 @@ std::uint64_t activeVoxelCount(const io::detail::VdbContents& contents, const st
       recorded<openvdb::Int64>(contents, name, openvdb::GridBase::META_FILE_VOXEL_COUNT).value_or(0));
 }
 
-bool unread(const io::detail::VdbContents& contents, const std::string& name) {
-  return std::any_of(contents.unread.begin(), contents.unread.end(),
-                     [&](const auto& grid) { return grid->getName() == name; });
-}
-
-// The grids readVdb makes dense. Those it does not still give the box (density and colour): a
-// writer that recorded no box for one has it read after all.
+// The grids readVdb makes dense (every grid, checked, when all are asked for). Those it does not
+// still give the box (density and colour): a writer that recorded no box for one has it read after all.
 io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& options) {
+  if (options.density && options.color && options.particleId) return io::detail::readVdbGrids(path);
   std::vector<std::string> names;
   for (const auto& [wanted, name] : {std::pair{options.density, "density"}, std::pair{options.color, "color"},
                                      std::pair{options.particleId, "particle_id"}})
@@ -306,8 +311,10 @@ io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& 
   io::detail::VdbContents contents = io::detail::readVdbGrids(path, names);
   const std::size_t wanted = names.size();
   for (const char* name : {"density", "color"})
-    if (unread(contents, name) && !activeBox(contents, name)) names.emplace_back(name);
-  return names.size() == wanted ? contents : io::detail::readVdbGrids(path, names);
+    if (unreadGrid(contents, name) && !activeBox(contents, name)) names.emplace_back(name);
+  if (names.size() == wanted) return contents;
+  contents = {};  // its trees are read again
+  return io::detail::readVdbGrids(path, names);
 }
 
 // Copies a grid into `out` over the box and lets its tree go.
@@ -332,7 +339,8 @@ SolidVolume readVdb(const std::string& path, const VdbReadOptions& options) {
   auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
   contents.grids.clear();
   // Recorded bounds can be edited apart from the values: ids outside them would be dropped unseen.
-  if (ids && !box.isInside(ids->evalActiveVoxelBoundingBox()))
+  const bool recordedBox = unreadGrid(contents, "density") || unreadGrid(contents, "color");
+  if (ids && recordedBox && !box.isInside(ids->evalActiveVoxelBoundingBox()))
     throw InputError("cannot read " + path +
                      ": damaged (its particle ids lie outside the bounds of its density and color grids)");
   if (!options.density) density.reset();

@@ -10,7 +10,9 @@ namespace solidtex {
 /// one in, and its dense arrays are freed grid by grid as the .vdb's trees are built.
 void writeVdb(const std::string& path, SolidVolume volume, double voxelSize = 1.0);
 
-/// Which of a .vdb's grids readVdb makes dense; the arrays of those left out stay empty.
+/// Which of a .vdb's grids readVdb makes dense; the arrays of those left out stay empty. A density
+/// or colour grid left out still gives the box, from the bounds its writer recorded (OpenVDB's file
+/// statistics, which solidtex and OpenVDB's own writer keep), or from its tree when none were.
 struct VdbReadOptions {
   bool density = true;
   /// The largest grid, 12 bytes a voxel dense and about as much as a tree: left out by measures

@@ -85,9 +85,9 @@ TEST(VdbIO, ReadsOnlyTheGridsAskedFor) {
   fs::remove(path);
 }
 
-TEST(VdbIO, IdsOutsideTheRecordedBoundsAreRefused) {
-  const auto path = tempPath("shrunkbounds.vdb");
-  writeVdb(path.string(), smallParticleVolume());  // particle 7 at (2, 1, 1)
+// Rewrites a file's grids with their recorded bounds set as given (OpenVDB's writer with its own
+// statistics off, so that they stay as set).
+void recordBounds(const fs::path& path, const openvdb::Vec3i& lo, const openvdb::Vec3i& hi) {
   openvdb::initialize();
   openvdb::GridPtrVec grids;
   {
@@ -95,13 +95,49 @@ TEST(VdbIO, IdsOutsideTheRecordedBoundsAreRefused) {
     file.open();
     grids = *file.getGrids();
   }
-  for (const auto& grid : grids)
-    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(openvdb::Vec3i(1, 1, 1)));
+  for (const auto& grid : grids) {
+    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MIN, openvdb::Vec3IMetadata(lo));
+    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(hi));
+  }
   openvdb::io::File rewritten(path.string());
   rewritten.setGridStatsMetadataEnabled(false);
   rewritten.write(grids);
+}
+
+TEST(VdbIO, RecordedBoundsThatCannotBeTrustedAreRefusedOrPassedOver) {
+  const auto path = tempPath("bounds.vdb");
+  const SolidVolume v = smallParticleVolume();  // particle 7 at (2, 1, 1)
+  const VdbReadOptions idsOnly{.density = false, .color = false, .particleId = true};
+  writeVdb(path.string(), v);
+  recordBounds(path, {0, 0, 0}, {1, 1, 1});  // edited: the ids lie outside
+  EXPECT_THROW(readVdb(path.string(), idsOnly), InputError);
+  EXPECT_EQ(readVdb(path.string()).dims, v.dims);  // the trees' own bounds
+  writeVdb(path.string(), v);
+  recordBounds(path, {4, 3, 2}, {0, 0, 0});  // inverted: no box, the trees are read
+  EXPECT_EQ(readVdb(path.string(), idsOnly).dims, v.dims);
+  writeVdb(path.string(), v);
+  recordBounds(path, {-(1 << 30), -(1 << 30), 0}, {(1 << 30) - 1, (1 << 30) - 1, 3});  // overflows int32
+  EXPECT_THROW(readVdb(path.string(), idsOnly), InputError);
+  fs::remove(path);
+}
+
+// A foreign file whose ids reach beyond its density grid: read whole, as always, over the
+// density's box; read by ids alone, refused (the ids could be dropped unseen).
+TEST(VdbIO, IdsBeyondTheDensityAreCroppedByAWholeRead) {
+  const auto path = tempPath("foreignids.vdb");
+  openvdb::initialize();
+  auto density = openvdb::FloatGrid::create(0.f);
+  density->setName("density");
+  density->tree().setValue(openvdb::Coord(0, 0, 0), 1.f);
+  auto ids = openvdb::Int32Grid::create(0);
+  ids->setName("particle_id");
+  ids->tree().setValue(openvdb::Coord(0, 0, 0), 1);
+  ids->tree().setValue(openvdb::Coord(3, 3, 3), 2);
+  openvdb::io::File(path.string()).write({density, ids});
+  const SolidVolume whole = readVdb(path.string());
+  EXPECT_EQ(whole.dims, (Dims{1, 1, 1}));
+  EXPECT_EQ(whole.particleId, std::vector<std::int32_t>{1});
   EXPECT_THROW(readVdb(path.string(), {.density = false, .color = false, .particleId = true}), InputError);
-  EXPECT_EQ(readVdb(path.string()).dims, smallParticleVolume().dims);  // the trees' own bounds
   fs::remove(path);
 }
 

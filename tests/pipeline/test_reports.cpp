@@ -51,6 +51,13 @@ TEST(Reports, SynthesizeReportIsSnakeCaseWithLevelsAndMemory) {
   EXPECT_EQ(report["level_reports"][1]["volume_size"], 16);
   EXPECT_GT(report["peak_memory_mib"].get<double>(), 0.0);
   EXPECT_TRUE(report["quality"]["axis"].contains("completeness"));
+  // Auto mode reads the particle ids first; a continuous solid has none and is read whole.
+  CompareJob compare;
+  compare.photo = job.exemplar;
+  compare.volume = job.output;
+  const nlohmann::json compared = runCompare(compare);
+  EXPECT_EQ(compared["mode"], "continuous");
+  EXPECT_EQ(otherKeys(compared), std::vector<std::string>{});
   fs::remove(job.output);
 }
 
