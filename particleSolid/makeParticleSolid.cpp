@@ -13,6 +13,7 @@
 #include "common/Random.h"
 #include "common/memoryBudget.h"
 #include "mesh/particleMeshes.h"
+#include "placement/PlacementTimeline.h"
 #include "placement/cropToCountedBox.h"
 #include "voxel/ParticleColoring.h"
 
@@ -246,8 +247,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
   requireVolumeBytes(margin > 0 ? "placing particles in a block" : "placing particles", placed,
                      solid_.memoryEstimate);
   const bool periodic = options_.boundary == Boundary::Periodic;
-  auto field =
-      makeSpaciousnessField(options_.placer, placed, placementRadiusCap(stats, particleScale), periodic);
+  const float radiusCap = placementRadiusCap(stats, particleScale);
   PlacementOptions placement;
   placement.dims = placed;
   placement.periodic = periodic;
@@ -259,15 +259,21 @@ const PlacementResult& ParticleSolidBuilder::place() {
     placement.particleWeights = solid_.sizing.particleWeights;
     placement.sizeFactor = solid_.sizing.sizeFactor;
   }
+  std::optional<PlacementTimeline> timeline;
+  if (const std::optional<Dims> block = timelineBlock(placed, dims, largestBoxSide(stats) * particleScale);
+      block && options_.timePlacement) {
+    solid_.timer.start("placement_timing");
+    report(progress_, "timing the placement on a smaller block");
+    timeline = timePlacement(stats, *factory_, options_.placer, radiusCap, placement, *block);
+    solid_.timer.start("placement");
+  }
   placement.progress = [&](double fraction, int count) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
                   fraction, stats.areaFraction);
-    // No share of the work: the volume fills fast with the large particles and slowly with the
-    // many small ones, whose count is not known ahead (docs/performance.md, progress), so a bar of
-    // the volume would promise a fifth of the time left.
-    report(progress_, line);
+    report(progress_, line, timeline ? timeline->timeShare(fraction / stats.areaFraction) : -1);
   };
+  auto field = makeSpaciousnessField(options_.placer, placed, radiusCap, periodic);
   solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
   field.reset();  // placement's largest part, given back before the solid is painted
   returnFreedMemory();

@@ -62,6 +62,10 @@ struct ParticleSolidOptions {
   bool meshes = false;  ///< also mesh each particle's surface (ParticleSolid::meshes)
   /// The caller will paint every colour at once (exports, numpy arrays): the memory check counts it.
   bool denseColor = false;
+  /// Place a smaller block first and time it, so that the progress gives placement's share done and
+  /// its time left (up to a twentieth more placing; large volumes only, PlacementTimeline). The
+  /// solid is the same either way.
+  bool timePlacement = false;
 };
 
 /// How one texture of the solid was made: synthesized (a tiled block of `block` voxels) or projected,

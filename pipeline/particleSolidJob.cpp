@@ -45,6 +45,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   ParticleSolidOptions options = job;
   options.meshes = job.meshPath.has_value();
   options.denseColor = job.exports.tiff || job.exports.npy || job.exports.vti;
+  options.timePlacement = job.progress;
   ParticleSolidBuilder builder(
       options, [&](const std::string& step, double fraction) { line.update(step, fraction); });
   OutputFiles outputs;

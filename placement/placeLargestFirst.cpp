@@ -27,7 +27,6 @@ constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
 // inner radius) to the one with which it surely fits (its outer radius): the tightest spots are
 // tried first, as best fit wants, but an irregular shape that fits none of them still finds room.
 constexpr int kRadiusSteps = 4;
-constexpr int kProgressEvery = 64;
 constexpr int kFailuresToRetire = 8;
 constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
 constexpr double kFirstPassShare = 0.85;
@@ -104,6 +103,9 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options,
   if (options.candidatesPerTry < 1)
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
+  if (options.progressEvery < 1)
+    throw InputError("placement: progress must come every particle or less often, got every " +
+                     std::to_string(options.progressEvery));
   if (options.counted) {
     const Box& c = *options.counted;
     if (c.empty() || !options.dims.contains(c.lo.x, c.lo.y, c.lo.z) ||
@@ -436,7 +438,7 @@ private:
     // Placed shapes only: in a crowded volume the large shapes of a bin fail more often.
     ++phase_->made[std::size_t(bin)];
     phase_->madeVoxels[std::size_t(bin)] += double(shape.voxels.size());
-    if (options_.progress && id % kProgressEvery == 0) options_.progress(fraction(), id);
+    if (options_.progress && id % options_.progressEvery == 0) options_.progress(fraction(), id);
   }
 
   PlacementResult finish(const std::string& reason) {

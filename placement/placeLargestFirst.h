@@ -46,6 +46,7 @@ struct PlacementOptions {
   /// Called now and then, while the field may be taking the last particle: it must not read the field. May be
   /// empty.
   std::function<void(double fraction, int placed)> progress;
+  int progressEvery = 64;  ///< particles between progress calls
 };
 
 /// One particle in the volume.

@@ -247,6 +247,7 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   const int threads = int(keywords.integer("threads").value_or(0));
   const std::optional<std::string> output = keywords.path("output"), reportPath = keywords.path("report");
   const bool progress = keywords.flag("progress").value_or(false);
+  options.timePlacement = progress;
   keywords.finish();
   std::string name;
   const cv::Mat image = photoOf(photo, name);
