@@ -1,5 +1,6 @@
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -50,6 +51,22 @@ TEST(VdbIO, RoundTripKeepsGridsAndMetadata) {
   fs::remove(path);
 }
 
+// Rewrites a file's grids after `edit` (OpenVDB's writer with its own statistics off, so that
+// edited bounds stay as set).
+void editGrids(const fs::path& path, const std::function<void(openvdb::GridBase&)>& edit) {
+  openvdb::initialize();
+  openvdb::GridPtrVec grids;
+  {
+    openvdb::io::File file(path.string());
+    file.open();
+    grids = *file.getGrids();
+  }
+  for (const auto& grid : grids) edit(*grid);
+  openvdb::io::File rewritten(path.string());
+  rewritten.setGridStatsMetadataEnabled(false);
+  rewritten.write(grids);
+}
+
 // Measures of particle ids read neither the colour nor the density; the box is still the whole
 // volume's (here the colour's, the density being active at one voxel), from the grids' recorded
 // bounds, or from their trees when a writer recorded none.
@@ -64,20 +81,10 @@ TEST(VdbIO, ReadsOnlyTheGridsAskedFor) {
   EXPECT_TRUE(ids.color.empty());
   EXPECT_EQ(ids.metadata.at("seed"), "42");
 
-  openvdb::initialize();
-  openvdb::GridPtrVec grids;
-  {
-    openvdb::io::File file(path.string());
-    file.open();
-    grids = *file.getGrids();
-  }
-  for (const auto& grid : grids) {
-    grid->removeMeta(openvdb::GridBase::META_FILE_BBOX_MIN);
-    grid->removeMeta(openvdb::GridBase::META_FILE_BBOX_MAX);
-  }
-  openvdb::io::File rewritten(path.string());
-  rewritten.setGridStatsMetadataEnabled(false);
-  rewritten.write(grids);
+  editGrids(path, [](openvdb::GridBase& grid) {
+    grid.removeMeta(openvdb::GridBase::META_FILE_BBOX_MIN);
+    grid.removeMeta(openvdb::GridBase::META_FILE_BBOX_MAX);
+  });
   const SolidVolume unrecorded =
       readVdb(path.string(), {.density = false, .color = false, .particleId = true});
   EXPECT_EQ(unrecorded.dims, v.dims);
@@ -85,23 +92,12 @@ TEST(VdbIO, ReadsOnlyTheGridsAskedFor) {
   fs::remove(path);
 }
 
-// Rewrites a file's grids with their recorded bounds set as given (OpenVDB's writer with its own
-// statistics off, so that they stay as set).
+// Rewrites a file's grids with their recorded bounds set as given.
 void recordBounds(const fs::path& path, const openvdb::Vec3i& lo, const openvdb::Vec3i& hi) {
-  openvdb::initialize();
-  openvdb::GridPtrVec grids;
-  {
-    openvdb::io::File file(path.string());
-    file.open();
-    grids = *file.getGrids();
-  }
-  for (const auto& grid : grids) {
-    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MIN, openvdb::Vec3IMetadata(lo));
-    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(hi));
-  }
-  openvdb::io::File rewritten(path.string());
-  rewritten.setGridStatsMetadataEnabled(false);
-  rewritten.write(grids);
+  editGrids(path, [&](openvdb::GridBase& grid) {
+    grid.insertMeta(openvdb::GridBase::META_FILE_BBOX_MIN, openvdb::Vec3IMetadata(lo));
+    grid.insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(hi));
+  });
 }
 
 TEST(VdbIO, RecordedBoundsThatCannotBeTrustedAreRefusedOrPassedOver) {
