@@ -36,7 +36,8 @@ PlacementTimeline::PlacementTimeline(const std::vector<std::pair<double, double>
 double PlacementTimeline::timeShare(double filled) const {
   if (filled_.empty() || filled <= filled_.front()) return 0;
   if (filled >= filled_.back() || total_ <= 0) return 1;
-  const std::size_t i = std::size_t(std::upper_bound(filled_.begin(), filled_.end(), filled) - filled_.begin());
+  const std::size_t i =
+      std::size_t(std::upper_bound(filled_.begin(), filled_.end(), filled) - filled_.begin());
   const double t = (filled - filled_[i - 1]) / (filled_[i] - filled_[i - 1]);
   return std::min(1.0, (seconds_[i - 1] + t * (seconds_[i] - seconds_[i - 1])) / total_);
 }
@@ -58,7 +59,8 @@ PlacementTimeline timePlacement(const ExemplarStats& stats, const ParticleFactor
                                       : Dims{0, 0, 0};
   options.dims = {counted.x + margin.x, counted.y + margin.y, counted.z + margin.z};
   if (options.counted) options.counted = Box::at(options.counted->lo, counted);
-  std::unique_ptr<SpaciousnessField> field = makeSpaciousnessField(placer, options.dims, radiusCap, options.periodic);
+  std::unique_ptr<SpaciousnessField> field =
+      makeSpaciousnessField(placer, options.dims, radiusCap, options.periodic);
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   std::vector<std::pair<double, double>> samples;

@@ -38,7 +38,8 @@ TEST(PlacementTimeline, TimesAPlacementFromItsFirstParticleToItsLast) {
   options.dims = {64, 64, 64};
   options.counted = Box::at({8, 8, 8}, {48, 48, 48});
   options.voxelsPerPixel = 0.8;
-  const PlacementTimeline timeline = timePlacement(stats, factory, PlacerKind::Edt, 20, options, {32, 40, 48});
+  const PlacementTimeline timeline =
+      timePlacement(stats, factory, PlacerKind::Edt, 20, options, {32, 40, 48});
   double last = 0;
   for (double filled = 0; filled <= 1.0; filled += 0.05) {
     const double share = timeline.timeShare(filled);
