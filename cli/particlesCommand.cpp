@@ -92,7 +92,9 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
       "--meshes", job->meshPath,
       "The particles' surfaces: OUT.ply (vertex colours, particle ids) or OUT.obj (+ OUT.mtl, "
       "an object per particle)");
-  command->add_flag("!--quiet", job->progress, "No progress line");
+  command->add_flag("!--quiet", job->progress,
+                    "No progress line (and, on large volumes, no timing of the placement on a small block "
+                    "first for its time left)");
   addSegmentationOptions(*command, job->segmentation);
   return
       [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing, threads] {
