@@ -260,18 +260,21 @@ const PlacementResult& ParticleSolidBuilder::place() {
     placement.sizeFactor = solid_.sizing.sizeFactor;
   }
   std::optional<PlacementTimeline> timeline;
-  if (const std::optional<Dims> block = timelineBlock(placed, dims, largestBoxSide(stats) * particleScale);
-      block && options_.timePlacement) {
+  const double largest = largestBoxSide(stats) * particleScale;
+  if (const std::optional<Dims> block =
+          options_.timePlacement ? timelineBlock(placed, dims, largest) : std::nullopt) {
     solid_.timer.start("placement_timing");
     report(progress_, "timing the placement on a smaller block");
     timeline = timePlacement(stats, *factory_, options_.placer, radiusCap, placement, *block);
+    returnFreedMemory();
     solid_.timer.start("placement");
   }
   placement.progress = [&](double fraction, int count) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
                   fraction, stats.areaFraction);
-    report(progress_, line, timeline ? timeline->timeShare(fraction / stats.areaFraction) : -1);
+    report(progress_, line,
+           timeline && stats.areaFraction > 0 ? timeline->timeShare(fraction / stats.areaFraction) : -1);
   };
   auto field = makeSpaciousnessField(options_.placer, placed, radiusCap, periodic);
   solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);

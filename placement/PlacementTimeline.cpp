@@ -43,6 +43,7 @@ double PlacementTimeline::timeShare(double filled) const {
 }
 
 std::optional<Dims> timelineBlock(const Dims& placed, const Dims& counted, double largestSide) {
+  if (counted.x > placed.x || counted.y > placed.y || counted.z > placed.z) return std::nullopt;
   const int edge = std::max(kMinEdge, int(std::ceil(kLargestAcross * largestSide)));
   const Dims block{std::min(counted.x, edge), std::min(counted.y, edge), std::min(counted.z, edge)};
   const Dims blockPlaced{block.x + placed.x - counted.x, block.y + placed.y - counted.y,
@@ -52,13 +53,13 @@ std::optional<Dims> timelineBlock(const Dims& placed, const Dims& counted, doubl
 }
 
 PlacementTimeline timePlacement(const ExemplarStats& stats, const ParticleFactory& factory, PlacerKind placer,
-                                float radiusCap, PlacementOptions options, const Dims& counted) {
+                                float radiusCap, PlacementOptions options, const Dims& block) {
   const Dims margin = options.counted ? Dims{options.dims.x - options.counted->dims().x,
                                              options.dims.y - options.counted->dims().y,
                                              options.dims.z - options.counted->dims().z}
                                       : Dims{0, 0, 0};
-  options.dims = {counted.x + margin.x, counted.y + margin.y, counted.z + margin.z};
-  if (options.counted) options.counted = Box::at(options.counted->lo, counted);
+  options.dims = {block.x + margin.x, block.y + margin.y, block.z + margin.z};
+  if (options.counted) options.counted = Box::at(options.counted->lo, block);
   std::unique_ptr<SpaciousnessField> field =
       makeSpaciousnessField(placer, options.dims, radiusCap, options.periodic);
   using Clock = std::chrono::steady_clock;
@@ -66,7 +67,7 @@ PlacementTimeline timePlacement(const ExemplarStats& stats, const ParticleFactor
   std::vector<std::pair<double, double>> samples;
   options.progressEvery = 1;
   options.progress = [&](double fraction, int) {
-    samples.emplace_back(fraction / stats.areaFraction,
+    samples.emplace_back(stats.areaFraction > 0 ? fraction / stats.areaFraction : 1,
                          std::chrono::duration<double>(Clock::now() - start).count());
   };
   placeLargestFirst(stats, factory, *field, options);

@@ -31,12 +31,13 @@ private:
 
 /// Where to time a placement of `placed` voxels whose counted box is `counted`, its largest
 /// particle `largestSide` voxels across: a block that holds a few of the largest, at most a
-/// twentieth of the voxels; none when no such block is small enough.
+/// twentieth of the voxels placed; none when no such block is small enough, or `counted` exceeds
+/// `placed`.
 std::optional<Dims> timelineBlock(const Dims& placed, const Dims& counted, double largestSide);
 
-/// Places `options`' particles in a block of `counted` voxels (plus the margin `options` keeps
+/// Places `options`' particles in a block of `block` voxels (plus the margin `options` keeps
 /// around its counted box) with a field of `placer` capped at `radiusCap`, and times it.
 PlacementTimeline timePlacement(const ExemplarStats& stats, const ParticleFactory& factory, PlacerKind placer,
-                                float radiusCap, PlacementOptions options, const Dims& counted);
+                                float radiusCap, PlacementOptions options, const Dims& block);
 
 }  // namespace solidtex

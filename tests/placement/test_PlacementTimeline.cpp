@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "discStats.h"
 #include "placement/PlacementTimeline.h"
-
-#include "discPhoto.h"
 
 namespace solidtex {
 namespace {
@@ -31,7 +30,7 @@ TEST(PlacementTimeline, IsTimedOnABlockOfAFewLargestParticlesAtMostATwentiethOfT
   EXPECT_FALSE(timelineBlock({100, 100, 100}, {100, 100, 100}, 10));
 }
 
-TEST(PlacementTimeline, TimesAPlacementFromItsFirstParticleToItsLast) {
+TEST(PlacementTimeline, TimesAPlacementFromItsFirstParticleToItsEnd) {
   const ExemplarStats stats = test::discStats(test::kDiscs, 0.25);
   const ParticleFactory factory(stats, test::fewShapes());
   PlacementOptions options;
@@ -51,6 +50,22 @@ TEST(PlacementTimeline, TimesAPlacementFromItsFirstParticleToItsLast) {
   EXPECT_DOUBLE_EQ(timeline.timeShare(1.2), 1);
   EXPECT_GT(timeline.timeShare(0.9), 0);
   EXPECT_LT(timeline.timeShare(0.5), 1);
+}
+
+// The timed block has its own field and placer: the placement after it is the one without it.
+TEST(PlacementTimeline, LeavesThePlacementAfterItAsItWas) {
+  const ExemplarStats stats = test::discStats(test::kDiscs, 0.25);
+  const ParticleFactory factory(stats, test::fewShapes());
+  PlacementOptions options;
+  options.dims = {48, 48, 48};
+  options.voxelsPerPixel = 0.8;
+  const auto place = [&] {
+    const auto field = makeSpaciousnessField(PlacerKind::Edt, options.dims, 20);
+    return placeLargestFirst(stats, factory, *field, options).ids;
+  };
+  const std::vector<std::int32_t> before = place();
+  timePlacement(stats, factory, PlacerKind::Edt, 20, options, {40, 40, 40});
+  EXPECT_EQ(place(), before);
 }
 
 }  // namespace

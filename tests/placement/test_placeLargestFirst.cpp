@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 
 #include <tbb/global_control.h>
-#include <opencv2/imgproc.hpp>
 
 #include "common/Error.h"
-#include "discPhoto.h"
+#include "discStats.h"
 #include "placement/cropToCountedBox.h"
 #include "placement/placeLargestFirst.h"
 

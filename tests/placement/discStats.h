@@ -1,5 +1,5 @@
 #pragma once
-// A photo of discs as segmentation would describe it, for the placement tests.
+// The statistics of a photo of discs, as segmentation would report them, for the placement tests.
 #include <algorithm>
 #include <map>
 #include <utility>
