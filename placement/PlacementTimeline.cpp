@@ -10,8 +10,8 @@ namespace {
 
 // The edge that holds this many of the largest particles across, at least kMinEdge: in smaller
 // blocks the walls shape the packing and the time curve drifts from a large block's (gravel at one
-// voxel per pixel: a 128^3 block's curve put 256^3's time left 1.5-3 times too long, 192^3's within
-// 0.8-1.5 times; docs/performance.md).
+// voxel per pixel: a 128^3 block's curve put 256^3's time left 1.4-3.2 times too long, 192^3's
+// 1.0-1.5 times, from a fifth of the run on; docs/performance.md).
 constexpr double kLargestAcross = 3;
 constexpr int kMinEdge = 192;
 // Timing costs at most this share of the voxels placed (and a little more time: smaller blocks
