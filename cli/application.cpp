@@ -11,12 +11,15 @@
 #include "common/Error.h"
 #include "common/OutputFiles.h"
 #include "common/memoryBudget.h"
+#include "parallel/Communicator.h"
 
 namespace solidtex::cli {
 namespace {
 
-/// One line on stderr, as users' scripts expect from a failing command.
+/// One line on stderr, as users' scripts expect from a failing command: from rank 0 alone when
+/// mpirun started several processes, which all meet the same bad input.
 int fail(const std::string& message, int code) {
+  if (launchedAs().rank != 0) return code;
   std::string line = message;
   std::replace(line.begin(), line.end(), '\n', ' ');
   std::cerr << "solidtex: error: " << line << '\n';
@@ -76,7 +79,9 @@ int runApplication(int argc, char** argv) {
     return fail(usageMessage(app, e.what()), kUsage);
   }
   try {
-    return application->actions.at(app.get_subcommands().front()->get_name())();
+    const std::string command = app.get_subcommands().front()->get_name();
+    if (command != "synthesize") requireOneProcess(command);
+    return application->actions.at(command)();
   } catch (const OptionError& e) {
     return fail(usageMessage(app, e.what()), kUsage);
   } catch (const std::bad_alloc&) {

@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "common/Error.h"
+#include "parallel/Communicator.h"
 #include "pipeline/growSolidJob.h"
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
@@ -70,6 +71,22 @@ void addVolumeOptions(CLI::App& command, SynthesizeVolumeJob& job, std::vector<i
               "Volume exemplars: write only the box X0 Y0 Z0 X1 Y1 Z1 (voxels [X0,X1) ...), identical "
               "to that box of the whole volume")
           ->expected(6)};
+}
+
+// What the volume job wrote, for its line on stdout.
+std::string volumeOutputSummary(const SynthesizeVolumeJob& job) {
+  const auto sides = [](const Dims& d) {
+    return std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z);
+  };
+  const Dims& d = job.synthesis.dims;
+  if (job.synthesis.region)
+    return "the " + sides(job.synthesis.region->dims()) + " box of a " + sides(d) +
+           " volume from a volume exemplar";
+  std::string line = sides(d) + " voxels from a volume exemplar";
+  if (job.brickEdge > 0) line += ", in bricks of " + std::to_string(job.brickEdge);
+  const int processes = launchedAs().size;
+  if (processes > 1) line += " on " + std::to_string(processes) + " processes";
+  return line;
 }
 
 // A photo solid grown to a large volume: the seed's photo options, the growth's volume options.
@@ -155,10 +172,11 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
                        std::to_string(kLargestDirectPhotoSolid) + " or with --dims; 0: never)")
       ->check(CLI::Range(0, 256));
   command->add_option("--bricks", *brickEdge,
-                      "Grown solids: synthesise bricks of this edge one at a time (same voxels, less "
-                      "memory; default: the whole volume when it fits in memory)");
+                      "Volume exemplars and grown solids: synthesise bricks of this edge one at a time (same "
+                      "voxels, less memory; grown default: the whole volume when it fits in memory). Volume "
+                      "exemplars: an edge dividing every side; mpirun's processes share the bricks");
   for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
-                           "--similarity-search", "--iterations", "--control", "--grow-from", "--bricks"})
+                           "--similarity-search", "--iterations", "--control", "--grow-from"})
     kinds->photoOnly.push_back(command->get_option(name));
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
@@ -191,11 +209,14 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
       v.exports = job->exports;
       v.progress = job->progress;
       v.measure = job->measure;
+      v.brickEdge = *brickEdge;
+      if (*brickEdge == 0 && command->get_option("--bricks")->count() > 0)
+        throw OptionError("--bricks must be positive, got 0");
       runSynthesizeVolume(v);
-      std::cout << v.output << ": " << v.synthesis.dims.x << "x" << v.synthesis.dims.y << "x"
-                << v.synthesis.dims.z << " voxels from a volume exemplar\n";
+      if (launchedAs().rank == 0) std::cout << v.output << ": " << volumeOutputSummary(v) << '\n';
       return 0;
     }
+    requireOneProcess("synthesize from a photo");
     job->synthesis.method = parseMethod(*method);
     job->synthesis.distance = parseDistance(*distance);
     job->synthesis.similaritySearch = parseSimilaritySearch(*similaritySearch);

@@ -22,6 +22,7 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
+#include "io/detail/solidGrids.h"
 #include "io/detail/vdbGrids.h"
 
 namespace solidtex {
@@ -29,8 +30,12 @@ namespace {
 
 static_assert(sizeof(Rgb) == sizeof(openvdb::Vec3s), "Rgb must be layout-compatible with Vec3s");
 
-openvdb::CoordBBox boxOf(const Dims& dims) {
-  return openvdb::CoordBBox(openvdb::Coord(0, 0, 0), openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
+openvdb::CoordBBox boxOf(const Dims& dims, const openvdb::Coord& origin = {}) {
+  return openvdb::CoordBBox(origin, origin + openvdb::Coord(dims.x - 1, dims.y - 1, dims.z - 1));
+}
+
+openvdb::Coord originOf(const SolidVolume& volume) {
+  return {volume.origin.x, volume.origin.y, volume.origin.z};
 }
 
 template <typename T>
@@ -46,11 +51,11 @@ void releasePages(const void* begin, const void* end) {
   if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
 }
 
-// A grid of the dense data, which it consumes: built one slab of leaves (8 z-layers, contiguous in our
-// layout) at a time, each slab's memory going back to the system once its leaves are built, so that
-// a volume's array and its grid are never both held whole.
+// A grid of the dense data, which it consumes, its first voxel at index `origin`: built one slab of leaves (8
+// z-layers, contiguous in our layout) at a time, each slab's memory going back to the system once its leaves
+// are built, so that a volume's array and its grid are never both held whole.
 template <typename GridT, typename Value>
-typename GridT::Ptr sparseFrom(const Dims& dims, std::vector<Value>& data,
+typename GridT::Ptr sparseFrom(const Dims& dims, const openvdb::Coord& origin, std::vector<Value>& data,
                                const typename GridT::ValueType& tolerance, const std::string& name,
                                const openvdb::math::Transform::Ptr& xform) {
   using VdbValue = typename GridT::ValueType;
@@ -61,8 +66,8 @@ typename GridT::Ptr sparseFrom(const Dims& dims, std::vector<Value>& data,
   for (int z = 0; z < dims.z; z += kSlab) {
     const int depth = std::min(kSlab, dims.z - z);
     Value* first = data.data() + std::size_t(z) * layer;
-    const openvdb::CoordBBox slab(openvdb::Coord(0, 0, z),
-                                  openvdb::Coord(dims.x - 1, dims.y - 1, z + depth - 1));
+    const openvdb::CoordBBox slab(origin + openvdb::Coord(0, 0, z),
+                                  origin + openvdb::Coord(dims.x - 1, dims.y - 1, z + depth - 1));
     openvdb::tools::Dense<VdbValue, openvdb::tools::LayoutXYZ> dense(slab,
                                                                      reinterpret_cast<VdbValue*>(first));
     openvdb::tools::copyFromDense(dense, *grid, tolerance);
@@ -82,13 +87,14 @@ openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, bool hasColor, const op
   openvdb::FloatGrid::Ptr grid;
   if (!volume.density.empty()) {
     const float tolerance = hasColor ? 0.f : -1.f;
-    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, volume.density, tolerance, "density", xform);
+    grid = sparseFrom<openvdb::FloatGrid>(volume.dims, originOf(volume), volume.density, tolerance, "density",
+                                          xform);
   } else if (ids) {
     grid = openvdb::FloatGrid::create(
         std::make_shared<openvdb::FloatTree>(ids->tree(), 0.f, 1.f, openvdb::TopologyCopy()));
   } else {
     grid = openvdb::FloatGrid::create(0.f);
-    grid->denseFill(boxOf(volume.dims), 1.f, true);
+    grid->denseFill(boxOf(volume.dims, originOf(volume)), 1.f, true);
   }
   grid->setName("density");
   grid->setTransform(xform);
@@ -97,13 +103,14 @@ openvdb::FloatGrid::Ptr densityGrid(SolidVolume& volume, bool hasColor, const op
 }
 
 // The colour grid's topology, every voxel of the box active, in leaves that hold no values.
-openvdb::Vec3SGrid::Ptr activeBoxTopology(const Dims& dims) {
+openvdb::Vec3SGrid::Ptr activeBoxTopology(const openvdb::CoordBBox& box) {
   using Leaf = openvdb::Vec3STree::LeafNodeType;
   auto grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.f));
-  const openvdb::CoordBBox box = boxOf(dims);
-  for (int z = 0; z < dims.z; z += int(Leaf::DIM))
-    for (int y = 0; y < dims.y; y += int(Leaf::DIM))
-      for (int x = 0; x < dims.x; x += int(Leaf::DIM)) {
+  const int mask = ~int(Leaf::DIM - 1);  // a leaf's first voxel, below the box's when not aligned
+  const openvdb::Coord first(box.min().x() & mask, box.min().y() & mask, box.min().z() & mask);
+  for (int z = first.z(); z <= box.max().z(); z += int(Leaf::DIM))
+    for (int y = first.y(); y <= box.max().y(); y += int(Leaf::DIM))
+      for (int x = first.x(); x <= box.max().x(); x += int(Leaf::DIM)) {
         auto leaf = std::make_unique<Leaf>(openvdb::PartialCreate(), openvdb::Coord(x, y, z));
         for (openvdb::Index n = 0; n < Leaf::SIZE; ++n)
           if (box.isInside(leaf->offsetToGlobalCoord(n))) leaf->setValueOn(n);
@@ -118,12 +125,14 @@ io::detail::GridGroup colorGrids(SolidVolume& volume, const openvdb::math::Trans
   io::detail::GridGroup group;
   openvdb::Vec3SGrid::Ptr color;
   if (!volume.color.empty()) {
-    color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.color, openvdb::Vec3s(-1.f), "color", xform);
+    color = sparseFrom<openvdb::Vec3SGrid>(volume.dims, originOf(volume), volume.color, openvdb::Vec3s(-1.f),
+                                           "color", xform);
   } else {
-    color = activeBoxTopology(volume.dims);
+    color = activeBoxTopology(boxOf(volume.dims, originOf(volume)));
     group.painters[&color->tree()] = [&volume](const openvdb::Coord& origin, openvdb::Vec3s* values) {
       for (openvdb::Index n = 0; n < openvdb::Vec3STree::LeafNodeType::SIZE; ++n) {
-        const openvdb::Coord c = origin + openvdb::Vec3STree::LeafNodeType::offsetToLocalCoord(n);
+        const openvdb::Coord c =
+            origin - originOf(volume) + openvdb::Vec3STree::LeafNodeType::offsetToLocalCoord(n);
         const bool inside = volume.dims.contains(c.x(), c.y(), c.z());
         const Rgb rgb = inside ? volume.colorAt(c.x(), c.y(), c.z()) : Rgb{0.f, 0.f, 0.f};
         values[n] = openvdb::Vec3s(rgb[0], rgb[1], rgb[2]);
@@ -143,7 +152,8 @@ openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
                                       const openvdb::math::Transform::Ptr& xform) {
   openvdb::Int32Grid::Ptr ids;
   if (!volume.particleId.empty())
-    ids = sparseFrom<openvdb::Int32Grid>(volume.dims, volume.particleId, 0, "particle_id", xform);
+    ids = sparseFrom<openvdb::Int32Grid>(volume.dims, originOf(volume), volume.particleId, 0, "particle_id",
+                                         xform);
   auto density = densityGrid(volume, hasColor, ids, xform);
   return ids ? openvdb::GridPtrVec{density, ids} : openvdb::GridPtrVec{density};
 }
@@ -152,10 +162,12 @@ openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
 // written. Colour goes first, beside only the dense ids (4 bytes a voxel): its tree (12 bytes a voxel
 // when the colours are dense, topology only when they are painted as written), and the ids' and
 // density's trees come after it is gone.
-std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double voxelSize) {
+}  // namespace
+
+// A region of a larger volume keeps the larger volume's index space, so that OpenVDB joins the
+// regions' trees voxel by voxel.
+std::vector<io::detail::GridGroupMaker> io::detail::gridGroupsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
-  // A region of a larger volume keeps its index space from 0 and is placed by its transform.
-  xform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) * voxelSize);
   std::vector<io::detail::GridGroupMaker> groups;
   const bool hasColor = volume.hasColor();
   if (hasColor) groups.push_back([&volume, xform] { return colorGrids(volume, xform); });
@@ -166,18 +178,16 @@ std::vector<io::detail::GridGroupMaker> gridGroupsOf(SolidVolume& volume, double
       for (std::size_t i = 0; i < positions.size(); ++i)
         positions[i] = {volume.sourcePosition[i][0], volume.sourcePosition[i][1], 0.f};
       release(volume.sourcePosition);
-      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(volume.dims, positions, openvdb::Vec3s(-1.f),
-                                                                "source_position", xform)};
+      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(
+          volume.dims, originOf(volume), positions, openvdb::Vec3s(-1.f), "source_position", xform)};
     });
   if (!volume.sourceVoxel.empty())
     groups.push_back([&volume, xform] {
-      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(volume.dims, volume.sourceVoxel,
-                                                                openvdb::Vec3s(-1.f), "source", xform)};
+      return openvdb::GridPtrVec{sparseFrom<openvdb::Vec3SGrid>(
+          volume.dims, originOf(volume), volume.sourceVoxel, openvdb::Vec3s(-1.f), "source", xform)};
     });
   return groups;
 }
-
-}  // namespace
 
 void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
   openvdb::initialize();
@@ -195,7 +205,7 @@ void writeVdb(const std::string& path, SolidVolume volume, double voxelSize) {
       throw std::logic_error("writeVdb: a grid does not match the volume's dimensions");
   openvdb::MetaMap meta;
   for (const auto& [key, value] : volume.metadata) meta.insertMeta(key, openvdb::StringMetadata(value));
-  io::detail::writeVdbGrids(path, gridGroupsOf(volume, voxelSize), meta);
+  io::detail::writeVdbGrids(path, io::detail::gridGroupsOf(volume, voxelSize), meta);
 }
 
 namespace {

@@ -14,18 +14,12 @@
 #include "common/srgb.h"
 #include "io/frameFieldIO.h"
 #include "io/vdbIO.h"
+#include "parallel/Communicator.h"
 #include "pipeline/jobOutputs.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {
 namespace {
-
-std::optional<FrameField> loadField(const SynthesizeVolumeJob& job) {
-  if (!job.field) return std::nullopt;
-  if (std::filesystem::path(*job.field).extension() == ".vdb")
-    return readFrameField(*job.field, job.synthesis.dims);
-  return builtinFrameField(*job.field, job.synthesis.dims);
-}
 
 // What a person looks at: densities as grey levels, colours as they are.
 std::vector<Rgb> displayColors(const DenseVolume& v) {
@@ -51,7 +45,16 @@ cv::Mat middleSlice(const DenseVolume& exemplar) {
   return out;
 }
 
-SolidVolume solidOf(VolumeSynthesisResult&& result) {
+}  // namespace
+
+std::optional<FrameField> loadVolumeField(const SynthesizeVolumeJob& job) {
+  if (!job.field) return std::nullopt;
+  if (std::filesystem::path(*job.field).extension() == ".vdb")
+    return readFrameField(*job.field, job.synthesis.dims);
+  return builtinFrameField(*job.field, job.synthesis.dims);
+}
+
+SolidVolume solidOfSynthesis(VolumeSynthesisResult&& result) {
   SolidVolume solid;
   solid.dims = result.values.dims;
   if (result.values.channels == 3) {
@@ -63,8 +66,19 @@ SolidVolume solidOf(VolumeSynthesisResult&& result) {
     solid.density = std::move(result.values.values);
   }
   solid.sourceVoxel = std::move(result.source);
+  solid.origin = result.box.lo;
   return solid;
 }
+
+std::vector<std::string> writeVolumePreviews(OutputFiles& outputs, const std::string& folder,
+                                             const DenseVolume& exemplar, const SolidVolume& solid) {
+  SolidVolume view;  // the colours only: the slices need nothing else
+  view.dims = solid.dims;
+  view.color = solid.color.empty() ? displayColors(DenseVolume{solid.dims, 1, solid.density}) : solid.color;
+  return writePreviews(outputs, folder, middleSlice(exemplar), view);
+}
+
+namespace {
 
 nlohmann::json levelReports(const VolumeSynthesisStatistics& stats) {
   nlohmann::json levels = nlohmann::json::array();
@@ -191,8 +205,16 @@ nlohmann::json volumeSynthesisReport(const VolumeSynthesisResult& result,
   return report;
 }
 
+std::map<std::string, std::string> volumeFileMetadata(const SynthesizeVolumeJob& job) {
+  return {{"solidtex_version", SOLIDTEX_VERSION},
+          {"command_line", job.commandLine},
+          {"seed", std::to_string(job.synthesis.seed)},
+          {"exemplar", std::filesystem::path(job.exemplar).filename().string()}};
+}
+
 nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
   namespace fs = std::filesystem;
+  if (job.brickEdge != 0 || launchedAs().size > 1) return runBrickedVolumeSynthesis(job);
   // Peak resident memory per voxel: 981 MiB for the walnut solid at 256^3; a frame field adds its
   // three axes per voxel.
   constexpr double kBytesPerVoxel = 56, kFieldBytesPerVoxel = 36;
@@ -207,7 +229,7 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
 
   const ThreadLimit threads(job.synthesis.threads);
   const DenseVolume exemplar = readVolumeExemplar(job.exemplar);
-  const std::optional<FrameField> field = loadField(job);
+  const std::optional<FrameField> field = loadVolumeField(job);
   VolumeSynthesisOptions options = job.synthesis;
   options.field = field ? &*field : nullptr;
   ProgressLine progress(job.progress);
@@ -218,25 +240,16 @@ nlohmann::json runSynthesizeVolume(const SynthesizeVolumeJob& job) {
 
   nlohmann::json report = volumeSynthesisReport(
       result, options, exemplar, fs::path(job.exemplar).filename().string(), job.field.value_or("none"));
-  const Box& box = result.box;
   if (job.measure) {
     progress.update("measuring the volume against the exemplar");
     report["quality"] = volumeQualityReport(result.values, exemplar, job.quality);
     progress.done();
   }
-  SolidVolume solid = solidOf(std::move(result));
-  solid.origin = box.lo;
-  solid.metadata = {{"solidtex_version", SOLIDTEX_VERSION},
-                    {"command_line", job.commandLine},
-                    {"seed", std::to_string(options.seed)},
-                    {"exemplar", fs::path(job.exemplar).filename().string()}};
+  SolidVolume solid = solidOfSynthesis(std::move(result));
+  solid.metadata = volumeFileMetadata(job);
   report["outputs"] = {{"vdb", job.output}};
-  if (job.preview) {
-    SolidVolume view;  // the colours only: the slices need nothing else
-    view.dims = solid.dims;
-    view.color = solid.color.empty() ? displayColors(DenseVolume{solid.dims, 1, solid.density}) : solid.color;
-    report["outputs"]["previews"] = writePreviews(outputs, *job.preview, middleSlice(exemplar), view);
-  }
+  if (job.preview)
+    report["outputs"]["previews"] = writeVolumePreviews(outputs, *job.preview, exemplar, solid);
   const auto exported = writeVolumeExports(outputs, job.exports, solid, {1, "voxel"});
   if (!exported.empty()) report["outputs"]["exports"] = exported;
   outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(solid)); });

@@ -10,6 +10,7 @@ packages=(
   libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
   libnanoflann-dev libfaiss-dev libblas-dev liblapack-dev
   libgtest-dev valgrind
+  libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3-numpy python3-scipy python3-skimage python3-pil
 )
 missing=()

@@ -38,14 +38,13 @@ inline fs::path scratch(const std::string& name) {
 /// A path as one shell word.
 inline std::string shellWord(const fs::path& path) { return "'" + path.string() + "'"; }
 
-/// Runs the real executable through the shell, as a user's script would. The captured streams are
+/// Runs `program arguments` through the shell, as a user's script would. The captured streams are
 /// named after the running test, since ctest runs tests in parallel.
-inline Outcome runSolidtex(const std::string& arguments) {
+inline Outcome runCommand(const std::string& program, const std::string& arguments) {
   std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::replace(test.begin(), test.end(), '/', '_');  // a parameterised test's "Name/3"
   const fs::path out = scratch(test + ".stdout"), err = scratch(test + ".stderr");
-  const std::string command =
-      shellWord(SOLIDTEX_EXECUTABLE) + " " + arguments + " >" + shellWord(out) + " 2>" + shellWord(err);
+  const std::string command = program + " " + arguments + " >" + shellWord(out) + " 2>" + shellWord(err);
   const int status = std::system(command.c_str());
   Outcome outcome;
   outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -53,6 +52,11 @@ inline Outcome runSolidtex(const std::string& arguments) {
   std::istringstream lines(readFile(err));
   for (std::string line; std::getline(lines, line);) outcome.errLines.push_back(line);
   return outcome;
+}
+
+/// Runs the real executable, as runCommand.
+inline Outcome runSolidtex(const std::string& arguments) {
+  return runCommand(shellWord(SOLIDTEX_EXECUTABLE), arguments);
 }
 
 }  // namespace solidtex::testing

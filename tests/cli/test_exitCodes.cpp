@@ -130,7 +130,12 @@ TEST(ExitCodes, VolumeExemplarsRefuseWhatTheyCannotUse) {
        "synthesize " + kPhoto + out + " --field circle", "synthesize " + kPhoto + out + " --jitter 0.5",
        "synthesize " + ct + out + " --field spiral", "synthesize " + ct + out + " --levels 9",
        "synthesize " + ct + out + " --size 16 --region 0 0 0 17 4 4",
-       "synthesize " + ct + out + " --size 100 --periodic"},  // sides multiples of 8
+       "synthesize " + ct + out + " --size 100 --periodic",  // sides multiples of 8
+       "synthesize " + ct + out + " --size 96 --bricks 64",  // not dividing the sides
+       "synthesize " + ct + out + " --size 64 --bricks 0",
+       "synthesize " + ct + out + " --size 64 --bricks -32",
+       "synthesize " + ct + out + " --size 64 --bricks 32 --region 0 0 0 8 8 8",
+       "synthesize " + ct + out + " --size 64 --bricks 32 --npy " + shellWord(dir / "npy")},
       2, dir);
   expectRefused({"synthesize " + shellWord(dir / "missing.vdb") + out}, 1, dir);
 }

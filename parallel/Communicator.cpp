@@ -1,0 +1,121 @@
+#include "parallel/Communicator.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+#ifdef SOLIDTEX_WITH_MPI
+#include <mpi.h>
+#endif
+
+#include "common/Error.h"
+
+namespace solidtex {
+namespace {
+
+int environmentInt(const char* name, int fallback) {
+  const char* text = std::getenv(name);
+  if (!text || !*text) return fallback;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  return *end == '\0' && value >= 0 && value <= std::numeric_limits<int>::max() ? int(value) : fallback;
+}
+
+#ifdef SOLIDTEX_WITH_MPI
+// MPI's counts are ints: a part goes in pieces of at most 1 GiB.
+constexpr std::size_t kPiece = std::size_t(1) << 30;
+constexpr int kSizeTag = 1, kPieceTag = 2;
+
+void finalizeMpi() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized) MPI_Finalize();
+}
+
+void checkMpi(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw InputError(std::string("MPI failed to ") + what);
+}
+#endif
+
+}  // namespace
+
+LaunchedAs launchedAs() {
+  LaunchedAs launched;
+  launched.size = environmentInt("OMPI_COMM_WORLD_SIZE", environmentInt("PMI_SIZE", 1));
+  launched.rank = environmentInt("OMPI_COMM_WORLD_RANK", environmentInt("PMI_RANK", 0));
+  launched.localSize = environmentInt("OMPI_COMM_WORLD_LOCAL_SIZE", environmentInt("MPI_LOCALNRANKS", 1));
+  launched.size = std::max(launched.size, 1);
+  launched.localSize = std::clamp(launched.localSize, 1, launched.size);
+  return launched;
+}
+
+bool mpiAvailable() {
+#ifdef SOLIDTEX_WITH_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+void requireOneProcess(const std::string& what) {
+  const int size = launchedAs().size;
+  if (size > 1)
+    throw OptionError(what + " runs as one process, but mpirun started " + std::to_string(size) +
+                      "; only volume exemplars' --bricks are shared among processes");
+}
+
+const Communicator& Communicator::world() {
+  static const Communicator world = [] {
+    const LaunchedAs launched = launchedAs();
+    if (launched.size == 1) return Communicator(0, 1);
+#ifdef SOLIDTEX_WITH_MPI
+    // Only this thread calls MPI; TBB's workers never do.
+    int provided = 0;
+    checkMpi(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "start");
+    std::atexit(finalizeMpi);
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return Communicator(rank, size);
+#else
+    throw InputError("this solidtex was built without MPI, so each of the " + std::to_string(launched.size) +
+                     " processes mpirun started would make the whole volume; rebuild it with "
+                     "libopenmpi-dev installed");
+#endif
+  }();
+  return world;
+}
+
+std::vector<std::string> Communicator::gatherToRoot(std::string bytes) const {
+  std::vector<std::string> parts;
+  if (size_ == 1) {
+    parts.push_back(std::move(bytes));
+    return parts;
+  }
+#ifdef SOLIDTEX_WITH_MPI
+  if (rank_ != 0) {
+    const std::uint64_t length = bytes.size();
+    checkMpi(MPI_Send(&length, 1, MPI_UINT64_T, 0, kSizeTag, MPI_COMM_WORLD), "send a part's size");
+    for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+      checkMpi(MPI_Send(bytes.data() + at, int(std::min(kPiece, bytes.size() - at)), MPI_BYTE, 0, kPieceTag,
+                        MPI_COMM_WORLD),
+               "send a part");
+    return parts;
+  }
+  parts.push_back(std::move(bytes));
+  for (int from = 1; from < size_; ++from) {
+    std::uint64_t length = 0;
+    checkMpi(MPI_Recv(&length, 1, MPI_UINT64_T, from, kSizeTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+             "receive a part's size");
+    std::string part(length, '\0');
+    for (std::size_t at = 0; at < part.size(); at += kPiece)
+      checkMpi(MPI_Recv(part.data() + at, int(std::min(kPiece, part.size() - at)), MPI_BYTE, from, kPieceTag,
+                        MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+               "receive a part");
+    parts.push_back(std::move(part));
+  }
+#endif
+  return parts;
+}
+
+}  // namespace solidtex
