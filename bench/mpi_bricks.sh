@@ -3,15 +3,19 @@
 # SIZE^3, unbricked, then in bricks of each EDGES on 1 and 2 processes; a Markdown table, then the
 # per-brick figures the 2048^3 model in docs/performance.md is built from.
 # Usage: bench/mpi_bricks.sh [SIZE]   (default 256; run from the repo root after building)
-#   EDGES="128 64"   brick edges
+#   EDGES="128"            brick edges
+#   OPTIONS="--corrections 1"  synthesis options of every run (each brick is widened by 16 voxels per
+#                          correction pass: with the default 4, bricks of 128 repeat 8 times the work)
 set -euo pipefail
 size=${1:-256}
-edges=${EDGES:-128 64}
+edges=${EDGES:-128}
+# shellcheck disable=SC2206
+options=(${OPTIONS---corrections 1})
 bin=${SOLIDTEX_BIN:-$PWD/build/cli/solidtex}
 mpirun=(mpirun --allow-run-as-root --oversubscribe --quiet)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-common=(synthesize data/volumes/ct_stent_64.vdb --size "$size" --seed 1 --quiet --no-quality)
+common=(synthesize data/volumes/ct_stent_64.vdb --size "$size" --seed 1 --quiet --no-quality "${options[@]}")
 
 row() {  # label, then the command
   local label=$1
