@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Strong scaling of volume-exemplar synthesis in bricks under mpirun: the stent CT exemplar at
-# SIZE^3, unbricked, then in bricks of each EDGES on 1 and 2 processes; a Markdown table, then the
-# per-brick figures the 2048^3 model in docs/performance.md is built from.
+# SIZE^3, unbricked, then in bricks of each EDGES as one process started alone (every core as a
+# thread) and on 1 and 2 processes under mpirun (which binds each to one core by default); a
+# Markdown table with the per-brick figures the 2048^3 model in docs/performance.md is built from.
 # Usage: bench/mpi_bricks.sh [SIZE]   (default 256; run from the repo root after building)
 #   EDGES="128"            brick edges
 #   OPTIONS="--corrections 1"  synthesis options of every run (each brick is widened by 16 voxels per
@@ -43,6 +44,7 @@ echo "| run | bricks | processes | wall s | analysis s | s per brick | MiB sent 
 echo "|---|---|---|---|---|---|---|---|---|---|"
 row "unbricked" "$bin" "${common[@]}"
 for edge in $edges; do
+  row "--bricks $edge, no mpirun" "$bin" "${common[@]}" --bricks "$edge"
   for np in 1 2; do
     row "--bricks $edge, -np $np" "${mpirun[@]}" -np "$np" "$bin" "${common[@]}" --bricks "$edge"
   done

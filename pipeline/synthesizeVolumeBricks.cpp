@@ -1,3 +1,5 @@
+#include <sched.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -34,7 +36,8 @@ void checkBrickedJob(const SynthesizeVolumeJob& job) {
                       " volume; choose an edge that divides every side");
   if (job.synthesis.region) throw OptionError("--region is one box already; it takes no --bricks");
   if (job.exports.tiff || job.exports.npy || job.exports.vti)
-    throw OptionError("--tiff, --npy and --vti hold the whole volume in memory; bricked runs write the .vdb only");
+    throw OptionError(
+        "--tiff, --npy and --vti hold the whole volume in memory; bricked runs write the .vdb only");
 }
 
 // Bricks [first, last) of `count`: contiguous runs, as even as they can be.
@@ -42,10 +45,16 @@ std::pair<std::size_t, std::size_t> bricksOfRank(std::size_t count, int rank, in
   return {count * std::size_t(rank) / std::size_t(size), count * std::size_t(rank + 1) / std::size_t(size)};
 }
 
-// Threads per process when none are asked for: the machine's cores shared by its processes.
+// Threads per process when none are asked for: the cores mpirun bound it to (by default one each
+// for up to two processes), else the machine's cores shared by the processes on it. More threads
+// than bound cores only take turns.
 int threadsPerProcess(int asked) {
   if (asked != 0) return asked;
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  const int bound = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
+  if (bound > 0 && bound < cores) return bound;
   return std::max(1, cores / launchedAs().localSize);
 }
 
@@ -54,7 +63,7 @@ struct ProcessPart {
   std::size_t bricks = 0;
   double seconds = 0, analysisSeconds = 0;
   std::string error;
-  std::string trees;  ///< BrickedVdb::bytes, empty for rank 0 (it keeps its own)
+  std::string trees;            ///< BrickedVdb::bytes, empty for rank 0 (it keeps its own)
   VolumeSynthesisResult first;  ///< its first brick's statistics and box, no voxels (not sent)
 };
 
@@ -115,7 +124,8 @@ ProcessPart makeBricks(const SynthesizeVolumeJob& job, const std::vector<Box>& b
 DenseVolume denseOfSolid(const SolidVolume& solid) {
   if (solid.color.empty()) return {solid.dims, 1, solid.density};
   DenseVolume out{solid.dims, 3, std::vector<float>(solid.color.size() * 3)};
-  for (std::size_t i = 0; i < solid.color.size(); ++i) std::copy_n(solid.color[i].data(), 3, &out.values[3 * i]);
+  for (std::size_t i = 0; i < solid.color.size(); ++i)
+    std::copy_n(solid.color[i].data(), 3, &out.values[3 * i]);
   return out;
 }
 
@@ -130,8 +140,8 @@ struct RootSeconds {
   double gather = 0, join = 0, write = 0;
 };
 
-nlohmann::json bricksReport(const SynthesizeVolumeJob& job, std::size_t count, const std::vector<ProcessPart>& parts,
-                            const RootSeconds& root) {
+nlohmann::json bricksReport(const SynthesizeVolumeJob& job, std::size_t count,
+                            const std::vector<ProcessPart>& parts, const RootSeconds& root) {
   nlohmann::json processes = nlohmann::json::array();
   double slowest = 0, total = 0;
   std::size_t exchanged = 0;
@@ -146,7 +156,9 @@ nlohmann::json bricksReport(const SynthesizeVolumeJob& job, std::size_t count, c
     total += p.seconds;
     exchanged += p.trees.size();
   }
-  return {{"edge", job.brickEdge > 0 ? job.brickEdge : std::max({job.synthesis.dims.x, job.synthesis.dims.y, job.synthesis.dims.z})},
+  return {{"edge", job.brickEdge > 0
+                       ? job.brickEdge
+                       : std::max({job.synthesis.dims.x, job.synthesis.dims.y, job.synthesis.dims.z})},
           {"count", count},
           {"processes", parts.size()},
           {"per_process", processes},
@@ -189,7 +201,8 @@ nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
   for (std::string& bytes : gathered) parts.push_back(decode(std::move(bytes)));
   for (std::size_t r = 0; r < parts.size(); ++r)
     if (!parts[r].error.empty())
-      throw InputError(world.size() > 1 ? "process " + std::to_string(r) + ": " + parts[r].error : parts[r].error);
+      throw InputError(world.size() > 1 ? "process " + std::to_string(r) + ": " + parts[r].error
+                                        : parts[r].error);
   const auto joinStart = std::chrono::steady_clock::now();
   for (std::size_t r = 1; r < parts.size(); ++r) trees.addBytes(parts[r].trees);
   rootSeconds.join = secondsSince(joinStart);
@@ -209,7 +222,8 @@ nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
   report["outputs"] = {{"vdb", job.output}};
   if (job.preview) {
     report["outputs"]["previews"] = writeVolumePreviews(outputs, *job.preview, exemplar, central);
-    report["outputs"]["preview_box"] = {shown.lo.x, shown.lo.y, shown.lo.z, shown.hi.x, shown.hi.y, shown.hi.z};
+    report["outputs"]["preview_box"] = {shown.lo.x, shown.lo.y, shown.lo.z,
+                                        shown.hi.x, shown.hi.y, shown.hi.z};
   }
   const auto writeStart = std::chrono::steady_clock::now();
   outputs.write(job.output, [&](const std::string& path) { trees.write(path, volumeFileMetadata(job)); });

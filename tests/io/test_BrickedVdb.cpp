@@ -71,8 +71,7 @@ TEST(BrickedVdb, BricksInAnyOrderWriteTheWholeVolumesFile) {
     std::vector<Box> bricks = bricksOf(dims, edge);
     std::reverse(bricks.begin(), bricks.end());
     BrickedVdb mine, other;
-    for (std::size_t b = 0; b < bricks.size(); ++b)
-      (b % 3 == 1 ? other : mine).add(boxOf(whole, bricks[b]));
+    for (std::size_t b = 0; b < bricks.size(); ++b) (b % 3 == 1 ? other : mine).add(boxOf(whole, bricks[b]));
     mine.addBytes(other.bytes());
     const fs::path path = test::scratchPath("bricked", "bricks" + std::to_string(edge) + ".vdb");
     mine.write(path.string(), kMetadata);

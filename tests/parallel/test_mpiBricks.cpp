@@ -29,7 +29,8 @@ fs::path emptyFolder(const std::string& name) {
 
 // solidtex under mpirun with `processes` processes (--quiet: mpirun's own notices left out).
 Outcome runUnderMpirun(int processes, const std::string& arguments) {
-  return testing::runCommand(std::string(SOLIDTEX_MPIRUN) + " --allow-run-as-root --oversubscribe --quiet -np " +
+  return testing::runCommand(std::string(SOLIDTEX_MPIRUN) +
+                                 " --allow-run-as-root --oversubscribe --quiet -np " +
                                  std::to_string(processes) + " " + shellWord(SOLIDTEX_EXECUTABLE),
                              arguments);
 }
@@ -49,8 +50,8 @@ TEST(MpiBricks, OneAndTwoProcessesWriteTheSameBytesAsTheUnbrickedVoxels) {
   for (const int processes : {1, 2}) {
     const fs::path out = dir / ("np" + std::to_string(processes) + ".vdb");
     const fs::path report = dir / ("np" + std::to_string(processes) + ".json");
-    const Outcome run = runUnderMpirun(processes, "synthesize " + kStent + " -o " + shellWord(out) + kOptions +
-                                                      " --report " + shellWord(report));
+    const Outcome run = runUnderMpirun(processes, "synthesize " + kStent + " -o " + shellWord(out) +
+                                                      kOptions + " --report " + shellWord(report));
     ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? "" : run.errLines.front());
     bytes[processes - 1] = fileBytes(out);
     const nlohmann::json bricks = nlohmann::json::parse(readFile(report))["bricks"];
@@ -64,8 +65,8 @@ TEST(MpiBricks, OneAndTwoProcessesWriteTheSameBytesAsTheUnbrickedVoxels) {
 
   // The same options without bricks, as one process: another command line, the same voxels.
   const fs::path whole = dir / "whole.vdb";
-  const std::string unbricked = kOptions.substr(0, kOptions.find(" --bricks")) +
-                                kOptions.substr(kOptions.find(" --corrections"));
+  const std::string unbricked =
+      kOptions.substr(0, kOptions.find(" --bricks")) + kOptions.substr(kOptions.find(" --corrections"));
   const Outcome run = testing::runSolidtex("synthesize " + kStent + " -o " + shellWord(whole) + unbricked);
   ASSERT_EQ(run.exitCode, 0);
   const SolidVolume a = readVdb(whole.string()), b = readVdb((dir / "np2.vdb").string());
@@ -77,9 +78,10 @@ TEST(MpiBricks, OneAndTwoProcessesWriteTheSameBytesAsTheUnbrickedVoxels) {
 TEST(MpiBricks, AKilledProcessLeavesNothing) {
   const fs::path dir = emptyFolder("killed");
   const fs::path out = dir / "killed_run.vdb";
-  // The newest of the two processes is killed once both have started working.
-  const std::string command = "( sleep 3; pkill -KILL -n -f " + shellWord(out.filename()) + " ) & " +
-                              std::string(SOLIDTEX_MPIRUN) + " --allow-run-as-root --oversubscribe --quiet -np 2 " +
+  // One of the two processes is killed once both have worked for two seconds.
+  const std::string command = shellWord(fs::path(SOLIDTEX_TESTS_DIR) / "killOneRank.sh") + " " +
+                              shellWord(out.filename()) + " & " + std::string(SOLIDTEX_MPIRUN) +
+                              " --allow-run-as-root --oversubscribe --quiet -np 2 " +
                               shellWord(SOLIDTEX_EXECUTABLE);
   const Outcome run = testing::runCommand(command, "synthesize " + kStent + " -o " + shellWord(out) +
                                                        " --size 128 --bricks 64 --quiet --report " +
@@ -92,10 +94,10 @@ TEST(MpiBricks, BadInputIsOneLineFromOneProcess) {
   const fs::path dir = emptyFolder("bad");
   const std::string out = " -o " + shellWord(dir / "a.vdb");
   const std::string photo = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "particles" / "gravel.png");
-  for (const std::string& arguments : {"synthesize " + kStent + out + " --size 128 --bricks 48",
-                                       "synthesize " + kStent + out + " --size 128 --bricks 64 --npy " +
-                                           shellWord(dir / "npy"),
-                                       "particles " + photo + out + " --size 64"}) {
+  for (const std::string& arguments :
+       {"synthesize " + kStent + out + " --size 128 --bricks 48",
+        "synthesize " + kStent + out + " --size 128 --bricks 64 --npy " + shellWord(dir / "npy"),
+        "particles " + photo + out + " --size 64"}) {
     const Outcome run = runUnderMpirun(2, arguments);
     EXPECT_EQ(run.exitCode, 2) << arguments;
     EXPECT_EQ(run.errLines.size(), 1u) << arguments;
