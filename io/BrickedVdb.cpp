@@ -16,7 +16,7 @@ namespace solidtex {
 
 struct BrickedVdb::Grids {
   double voxelSize = 1;
-  openvdb::GridPtrVec grids;  ///< in the order writeVdb writes them; grids sharing a tree stay shared
+  openvdb::GridPtrVec grids;  // in the order writeVdb writes them; grids sharing a tree stay shared
 
   openvdb::GridBase::Ptr find(const std::string& name) const {
     for (const auto& grid : grids)

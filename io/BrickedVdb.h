@@ -12,8 +12,11 @@
 namespace solidtex {
 
 /// The grids of the bricks added so far, each brick at its place in the whole volume's index space
-/// (its SolidVolume::origin). Bricks must not overlap; once all are added, write() gives the same
-/// file as writeVdb of the whole volume, in whatever order and by whatever process they came.
+/// (its SolidVolume::origin). Bricks must not overlap. For grids that keep every voxel of the box
+/// active (colours, a density volume's values, sources: what volume synthesis writes), write()
+/// gives the file writeVdb gives for the whole volume once all bricks are added, in whatever order
+/// and by whatever process they came. Grids whose constant parts writeVdb turns into tiles
+/// (particle ids, a density beside colours) keep each brick's tiles instead.
 class BrickedVdb {
 public:
   explicit BrickedVdb(double voxelSize = 1.0);

@@ -158,14 +158,13 @@ openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
   return ids ? openvdb::GridPtrVec{density, ids} : openvdb::GridPtrVec{density};
 }
 
+}  // namespace
+
 // The grids in groups, each consuming its dense arrays when the writer reaches it and freed once
 // written. Colour goes first, beside only the dense ids (4 bytes a voxel): its tree (12 bytes a voxel
 // when the colours are dense, topology only when they are painted as written), and the ids' and
-// density's trees come after it is gone.
-}  // namespace
-
-// A region of a larger volume keeps the larger volume's index space, so that OpenVDB joins the
-// regions' trees voxel by voxel.
+// density's trees come after it is gone. A region of a larger volume keeps the larger volume's
+// index space, so that OpenVDB joins the regions' trees voxel by voxel.
 std::vector<io::detail::GridGroupMaker> io::detail::gridGroupsOf(SolidVolume& volume, double voxelSize) {
   auto xform = openvdb::math::Transform::createLinearTransform(voxelSize);
   std::vector<io::detail::GridGroupMaker> groups;

@@ -22,7 +22,8 @@ int environmentInt(const char* name, int fallback) {
 }
 
 #ifdef SOLIDTEX_WITH_MPI
-// MPI's counts are ints: a part goes in pieces of at most 1 GiB.
+// MPI's counts are ints: a part goes in pieces of at most 1 GiB. MPI's errors end the run (its
+// default handler), so calls are not checked.
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 constexpr int kSizeTag = 1, kPieceTag = 2;
 
@@ -30,10 +31,6 @@ void finalizeMpi() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (!finalized) MPI_Finalize();
-}
-
-void checkMpi(int code, const char* what) {
-  if (code != MPI_SUCCESS) throw InputError(std::string("MPI failed to ") + what);
 }
 #endif
 
@@ -47,14 +44,6 @@ LaunchedAs launchedAs() {
   launched.size = std::max(launched.size, 1);
   launched.localSize = std::clamp(launched.localSize, 1, launched.size);
   return launched;
-}
-
-bool mpiAvailable() {
-#ifdef SOLIDTEX_WITH_MPI
-  return true;
-#else
-  return false;
-#endif
 }
 
 void requireOneProcess(const std::string& what) {
@@ -71,7 +60,7 @@ const Communicator& Communicator::world() {
 #ifdef SOLIDTEX_WITH_MPI
     // Only this thread calls MPI; TBB's workers never do.
     int provided = 0;
-    checkMpi(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "start");
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
     std::atexit(finalizeMpi);
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -95,27 +84,41 @@ std::vector<std::string> Communicator::gatherToRoot(std::string bytes) const {
 #ifdef SOLIDTEX_WITH_MPI
   if (rank_ != 0) {
     const std::uint64_t length = bytes.size();
-    checkMpi(MPI_Send(&length, 1, MPI_UINT64_T, 0, kSizeTag, MPI_COMM_WORLD), "send a part's size");
+    MPI_Send(&length, 1, MPI_UINT64_T, 0, kSizeTag, MPI_COMM_WORLD);
     for (std::size_t at = 0; at < bytes.size(); at += kPiece)
-      checkMpi(MPI_Send(bytes.data() + at, int(std::min(kPiece, bytes.size() - at)), MPI_BYTE, 0, kPieceTag,
-                        MPI_COMM_WORLD),
-               "send a part");
+      MPI_Send(bytes.data() + at, int(std::min(kPiece, bytes.size() - at)), MPI_BYTE, 0, kPieceTag,
+               MPI_COMM_WORLD);
     return parts;
   }
   parts.push_back(std::move(bytes));
   for (int from = 1; from < size_; ++from) {
     std::uint64_t length = 0;
-    checkMpi(MPI_Recv(&length, 1, MPI_UINT64_T, from, kSizeTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-             "receive a part's size");
+    MPI_Recv(&length, 1, MPI_UINT64_T, from, kSizeTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     std::string part(length, '\0');
     for (std::size_t at = 0; at < part.size(); at += kPiece)
-      checkMpi(MPI_Recv(part.data() + at, int(std::min(kPiece, part.size() - at)), MPI_BYTE, from, kPieceTag,
-                        MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-               "receive a part");
+      MPI_Recv(part.data() + at, int(std::min(kPiece, part.size() - at)), MPI_BYTE, from, kPieceTag,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     parts.push_back(std::move(part));
   }
 #endif
   return parts;
+}
+
+std::string Communicator::firstOf(const std::string& text) const {
+  if (size_ == 1) return text;
+#ifdef SOLIDTEX_WITH_MPI
+  // Texts are one-line messages: their lengths fit MPI's ints.
+  const int length = int(std::min<std::size_t>(text.size(), 1 << 16));
+  std::vector<int> lengths(std::size_t(size_), 0), offsets(std::size_t(size_), 0);
+  MPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (std::size_t r = 1; r < lengths.size(); ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
+  std::string all(std::size_t(offsets.back() + lengths.back()), '\0');
+  MPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR,
+                 MPI_COMM_WORLD);
+  for (std::size_t r = 0; r < lengths.size(); ++r)
+    if (lengths[r] > 0) return all.substr(std::size_t(offsets[r]), std::size_t(lengths[r]));
+#endif
+  return {};
 }
 
 }  // namespace solidtex

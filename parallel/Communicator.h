@@ -16,9 +16,6 @@ struct LaunchedAs {
 };
 LaunchedAs launchedAs();
 
-/// Whether this build was made with MPI and can run as several processes.
-bool mpiAvailable();
-
 /// Throws OptionError when mpirun started several processes for `what`, which runs as one.
 void requireOneProcess(const std::string& what);
 
@@ -35,6 +32,9 @@ public:
   /// On rank 0: every rank's bytes in rank order (its own moved in). Elsewhere: sends its own to
   /// rank 0 and returns nothing. Parts of any size: larger than MPI's int counts too.
   std::vector<std::string> gatherToRoot(std::string bytes) const;
+  /// On every rank: the first non-empty `text` in rank order (empty when all are), for agreeing
+  /// on a failure before work that every rank must share.
+  std::string firstOf(const std::string& text) const;
 
 private:
   Communicator(int rank, int size) : rank_(rank), size_(size) {}

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <filesystem>
 #include <new>
-#include <numeric>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,17 +26,41 @@ std::string sides(const Dims& d) {
   return std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z);
 }
 
-void checkBrickedJob(const SynthesizeVolumeJob& job) {
+// What every process checks alike before MPI starts: the same input fails on all of them.
+void checkBrickedJob(const SynthesizeVolumeJob& job, int processes) {
   const Dims& d = job.synthesis.dims;
   const int edge = job.brickEdge;
   if (edge < 0) throw OptionError("--bricks must be positive, got " + std::to_string(edge));
   if (edge > 0 && (d.x % edge != 0 || d.y % edge != 0 || d.z % edge != 0))
     throw OptionError("--bricks " + std::to_string(edge) + " does not divide the " + sides(d) +
                       " volume; choose an edge that divides every side");
-  if (job.synthesis.region) throw OptionError("--region is one box already; it takes no --bricks");
+  if (job.synthesis.region)
+    throw OptionError("--region is one box already: it is made neither in bricks nor by several processes");
   if (job.exports.tiff || job.exports.npy || job.exports.vti)
     throw OptionError(
         "--tiff, --npy and --vti hold the whole volume in memory; bricked runs write the .vdb only");
+  const std::size_t count = bricksOf(d, edge).size();
+  if (count < std::size_t(processes))
+    throw OptionError(std::to_string(processes) + " processes for " + std::to_string(count) +
+                      " brick(s): give --bricks an edge that makes at least one brick per process");
+}
+
+// A failure as it travels between processes: its exit kind, then its one line.
+std::string failureOf(const std::exception_ptr& failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const OptionError& e) {
+    return std::string("2") + e.what();
+  } catch (const std::bad_alloc&) {
+    return "1out of memory (see --max-memory; smaller bricks need less)";
+  } catch (const std::exception& e) {
+    return std::string("1") + e.what();
+  }
+}
+
+[[noreturn]] void throwFailure(const std::string& failure) {
+  if (failure.front() == '2') throw OptionError(failure.substr(1));
+  throw InputError(failure.substr(1));
 }
 
 // Bricks [first, last) of `count`: contiguous runs, as even as they can be.
@@ -45,45 +68,62 @@ std::pair<std::size_t, std::size_t> bricksOfRank(std::size_t count, int rank, in
   return {count * std::size_t(rank) / std::size_t(size), count * std::size_t(rank + 1) / std::size_t(size)};
 }
 
-// Threads per process when none are asked for: the cores mpirun bound it to (by default one each
-// for up to two processes), else the machine's cores shared by the processes on it. More threads
-// than bound cores only take turns.
+// Threads per process when none are asked for: its share of the machine's cores, and no more than
+// mpirun bound it to (one core each for up to two processes, a socket beyond): more threads than
+// bound cores only take turns.
 int threadsPerProcess(int asked) {
   if (asked != 0) return asked;
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int share = std::max(1, cores / launchedAs().localSize);
   cpu_set_t set;
   CPU_ZERO(&set);
   const int bound = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
-  if (bound > 0 && bound < cores) return bound;
-  return std::max(1, cores / launchedAs().localSize);
+  return bound > 0 ? std::min(bound, share) : share;
+}
+
+// Peak bytes of a process: one brick's work as the whole volume's would be (56 a voxel), the trees
+// it keeps (at most colour and source, 24 a voxel; rank 0 keeps every process's) and the frame
+// field over the whole volume (36 a voxel).
+double processPeakBytes(const SynthesizeVolumeJob& job, std::size_t bricks, int rank, int size) {
+  const double brick = double(bricksOf(job.synthesis.dims, job.brickEdge).front().dims().count());
+  const double whole = double(job.synthesis.dims.count());
+  const double kept = rank == 0 ? whole : whole * double(bricks / std::size_t(size) + 1) / double(bricks);
+  return 56 * brick + 24 * kept + (job.field ? 36 * whole : 0);
 }
 
 // What one process did, sent to rank 0 ahead of its trees.
 struct ProcessPart {
   std::size_t bricks = 0;
   double seconds = 0, analysisSeconds = 0;
-  std::string error;
-  std::string trees;            ///< BrickedVdb::bytes, empty for rank 0 (it keeps its own)
-  VolumeSynthesisResult first;  ///< its first brick's statistics and box, no voxels (not sent)
+  std::string failure;          // failureOf, empty when it succeeded
+  std::string trees;            // BrickedVdb::bytes; empty for rank 0, which keeps its own
+  std::size_t bytesSent = 0;    // the trees' size, kept once they are joined
+  VolumeSynthesisResult first;  // its first brick's box and statistics, no voxels (not sent)
 };
 
-std::string encode(const ProcessPart& part) {
+// The header, a newline, then the trees, which it consumes.
+std::string encode(ProcessPart& part) {
   const nlohmann::json header = {{"bricks", part.bricks},
                                  {"seconds", part.seconds},
                                  {"analysis_seconds", part.analysisSeconds},
-                                 {"error", part.error}};
-  return header.dump() + '\n' + part.trees;
+                                 {"failure", part.failure}};
+  std::string bytes = std::move(part.trees);
+  bytes.insert(0, header.dump() + '\n');
+  return bytes;
 }
 
 ProcessPart decode(std::string&& bytes) {
   const std::size_t end = bytes.find('\n');
   const nlohmann::json header = nlohmann::json::parse(bytes.substr(0, end));
-  ProcessPart part{header["bricks"], header["seconds"], header["analysis_seconds"], header["error"], {}};
-  part.trees = bytes.substr(end + 1);
+  ProcessPart part{
+      header["bricks"], header["seconds"], header["analysis_seconds"], header["failure"], {}, 0, {}};
+  bytes.erase(0, end + 1);
+  part.bytesSent = bytes.size();
+  part.trees = std::move(bytes);
   return part;
 }
 
-// This process's bricks, made one at a time and joined into `trees`.
+// This process's bricks, made one at a time and joined into `trees`; other ranks' as bytes.
 ProcessPart makeBricks(const SynthesizeVolumeJob& job, const std::vector<Box>& bricks, int rank, int size,
                        BrickedVdb& trees) {
   ProcessPart part;
@@ -111,13 +151,14 @@ ProcessPart makeBricks(const SynthesizeVolumeJob& job, const std::vector<Box>& b
       ++part.bricks;
     }
     progress.done();
-  } catch (const std::bad_alloc&) {
-    part.error = "out of memory (see --max-memory; smaller bricks need less)";
-  } catch (const std::exception& e) {
-    part.error = e.what();
+    if (rank != 0) {
+      part.trees = trees.bytes();
+      trees = BrickedVdb();
+    }
+  } catch (...) {
+    part.failure = failureOf(std::current_exception());
   }
   part.seconds = secondsSince(start);
-  if (part.error.empty() && rank != 0) part.trees = trees.bytes();
   return part;
 }
 
@@ -151,14 +192,13 @@ nlohmann::json bricksReport(const SynthesizeVolumeJob& job, std::size_t count,
                          {"bricks", p.bricks},
                          {"seconds", p.seconds},
                          {"analysis_seconds", p.analysisSeconds},
-                         {"bytes_sent", p.trees.size()}});
+                         {"bytes_sent", p.bytesSent}});
     slowest = std::max(slowest, p.seconds);
     total += p.seconds;
-    exchanged += p.trees.size();
+    exchanged += p.bytesSent;
   }
-  return {{"edge", job.brickEdge > 0
-                       ? job.brickEdge
-                       : std::max({job.synthesis.dims.x, job.synthesis.dims.y, job.synthesis.dims.z})},
+  const Dims& d = job.synthesis.dims;
+  return {{"edge", job.brickEdge > 0 ? job.brickEdge : std::max({d.x, d.y, d.z})},
           {"count", count},
           {"processes", parts.size()},
           {"per_process", processes},
@@ -169,53 +209,39 @@ nlohmann::json bricksReport(const SynthesizeVolumeJob& job, std::size_t count,
           {"write_seconds", root.write}};
 }
 
-}  // namespace
-
-nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
-  checkBrickedJob(job);
-  const Communicator& world = Communicator::world();
-  const bool root = world.rank() == 0;
-  const std::vector<Box> bricks = bricksOf(job.synthesis.dims, job.brickEdge);
-  // A brick's work as the whole volume's would be (56 bytes a voxel), beside the trees kept so far.
-  requireVolumeMemory("synthesising a brick", bricks.front().dims(), 56);
-  OutputFiles outputs;
-  if (root) {
-    outputs.addInput(job.exemplar);
-    if (job.field) outputs.addInput(*job.field);
-    addVolumeOutputs(outputs, job.output, job.report, job.preview);
-  }
-  const ThreadLimit threads(threadsPerProcess(job.synthesis.threads));
-  BrickedVdb trees;
-  const auto start = std::chrono::steady_clock::now();
-  ProcessPart mine = makeBricks(job, bricks, world.rank(), world.size(), trees);
-  const std::string error = mine.error;
-  RootSeconds rootSeconds;
-  const auto gatherStart = std::chrono::steady_clock::now();
-  std::vector<std::string> gathered = world.gatherToRoot(encode(mine));
-  rootSeconds.gather = secondsSince(gatherStart);
-  if (!root) {
-    if (!error.empty()) throw InputError(error);  // rank 0 says it; this exit code only tells mpirun
-    return nlohmann::json::object();
-  }
+// On rank 0: every part, its own first, joined into `trees` as each is read; the first failure
+// thrown instead.
+std::vector<ProcessPart> joinParts(std::vector<std::string>&& gathered, ProcessPart&& own, BrickedVdb& trees,
+                                   RootSeconds& seconds) {
   std::vector<ProcessPart> parts;
-  for (std::string& bytes : gathered) parts.push_back(decode(std::move(bytes)));
+  parts.push_back(std::move(own));
+  for (std::size_t r = 1; r < gathered.size(); ++r) parts.push_back(decode(std::move(gathered[r])));
   for (std::size_t r = 0; r < parts.size(); ++r)
-    if (!parts[r].error.empty())
-      throw InputError(world.size() > 1 ? "process " + std::to_string(r) + ": " + parts[r].error
-                                        : parts[r].error);
-  const auto joinStart = std::chrono::steady_clock::now();
-  for (std::size_t r = 1; r < parts.size(); ++r) trees.addBytes(parts[r].trees);
-  rootSeconds.join = secondsSince(joinStart);
+    if (!parts[r].failure.empty())
+      throwFailure(r == 0 ? parts[r].failure
+                          : parts[r].failure.substr(0, 1) + "process " + std::to_string(r) + ": " +
+                                parts[r].failure.substr(1));
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t r = 1; r < parts.size(); ++r) {
+    trees.addBytes(parts[r].trees);
+    std::string().swap(parts[r].trees);
+  }
+  seconds.join = secondsSince(start);
+  return parts;
+}
 
+// Rank 0's files: the report, previews and quality from the central box, and the joined .vdb.
+nlohmann::json writeBrickedOutputs(const SynthesizeVolumeJob& job, OutputFiles& outputs, BrickedVdb& trees,
+                                   const std::vector<ProcessPart>& parts, std::size_t bricks,
+                                   RootSeconds& seconds, double elapsed) {
   const DenseVolume exemplar = readVolumeExemplar(job.exemplar);
-  nlohmann::json report = volumeSynthesisReport(mine.first, job.synthesis, exemplar,
+  nlohmann::json report = volumeSynthesisReport(parts.front().first, job.synthesis, exemplar,
                                                 std::filesystem::path(job.exemplar).filename().string(),
                                                 job.field.value_or("none"));
   report["first_brick_level_reports"] = std::move(report["level_reports"]);
   report.erase("level_reports");
-  report["analysis_seconds"] = mine.analysisSeconds;
-  report["seconds"] = secondsSince(start);
-
+  report["analysis_seconds"] = parts.front().analysisSeconds;
+  report["seconds"] = elapsed;
   const Box shown = centralBox(job.synthesis.dims, kBrickedPreviewSide);
   const SolidVolume central = trees.denseBox(shown);
   if (job.measure) report["quality"] = volumeQualityReport(denseOfSolid(central), exemplar, job.quality);
@@ -225,12 +251,54 @@ nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
     report["outputs"]["preview_box"] = {shown.lo.x, shown.lo.y, shown.lo.z,
                                         shown.hi.x, shown.hi.y, shown.hi.z};
   }
-  const auto writeStart = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   outputs.write(job.output, [&](const std::string& path) { trees.write(path, volumeFileMetadata(job)); });
-  rootSeconds.write = secondsSince(writeStart);
-  report["bricks"] = bricksReport(job, bricks.size(), parts, rootSeconds);
+  seconds.write = secondsSince(start);
+  report["bricks"] = bricksReport(job, bricks, parts, seconds);
   report["peak_memory_mib"] = peakMemoryMiB();
   writeReport(outputs, job.report, report);
+  return report;
+}
+
+}  // namespace
+
+nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
+  checkBrickedJob(job, launchedAs().size);
+  const Communicator& world = Communicator::world();
+  const bool root = world.rank() == 0;
+  const std::vector<Box> bricks = bricksOf(job.synthesis.dims, job.brickEdge);
+  // Checks that may fail on one process alone (its memory, rank 0's outputs) are agreed on before
+  // the work: a process that left alone would leave the others waiting for it.
+  OutputFiles outputs;
+  std::string failure;
+  try {
+    requireMemory("synthesising bricks", processPeakBytes(job, bricks.size(), world.rank(), world.size()));
+    if (root) {
+      outputs.addInput(job.exemplar);
+      if (job.field) outputs.addInput(*job.field);
+      addVolumeOutputs(outputs, job.output, job.report, job.preview);
+    }
+  } catch (...) {
+    failure = failureOf(std::current_exception());
+  }
+  if (const std::string first = world.firstOf(failure); !first.empty()) throwFailure(first);
+
+  const ThreadLimit threads(threadsPerProcess(job.synthesis.threads));
+  BrickedVdb trees;
+  const auto start = std::chrono::steady_clock::now();
+  ProcessPart mine = makeBricks(job, bricks, world.rank(), world.size(), trees);
+  RootSeconds seconds;
+  const auto gatherStart = std::chrono::steady_clock::now();
+  const std::string myFailure = mine.failure;
+  std::vector<std::string> gathered = world.gatherToRoot(encode(mine));
+  seconds.gather = secondsSince(gatherStart);
+  if (!root) {
+    if (!myFailure.empty()) throwFailure(myFailure);  // rank 0 says it; this exit code only tells mpirun
+    return nlohmann::json::object();
+  }
+  const std::vector<ProcessPart> parts = joinParts(std::move(gathered), std::move(mine), trees, seconds);
+  nlohmann::json report =
+      writeBrickedOutputs(job, outputs, trees, parts, bricks.size(), seconds, secondsSince(start));
   outputs.commit();
   return report;
 }

@@ -59,11 +59,6 @@ const std::map<std::string, std::string> kMetadata = {{"seed", "5"}, {"command_l
 TEST(BrickedVdb, BricksInAnyOrderWriteTheWholeVolumesFile) {
   const Dims dims{40, 24, 16};
   SolidVolume whole = gradientSolid(dims);
-  const std::vector<SolidVolume> parts = [&] {
-    std::vector<SolidVolume> out;
-    for (const Box& b : bricksOf(dims, 12)) out.push_back(boxOf(whole, b));
-    return out;
-  }();
   const fs::path expected = test::scratchPath("bricked", "whole.vdb");
   whole.metadata = kMetadata;
   writeVdb(expected.string(), whole);

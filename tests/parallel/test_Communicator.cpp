@@ -31,6 +31,7 @@ TEST(Communicator, AProcessStartedAloneIsRankZeroOfOne) {
   const std::vector<std::string> parts = world.gatherToRoot("abc");
   ASSERT_EQ(parts.size(), 1u);
   EXPECT_EQ(parts[0], "abc");
+  EXPECT_EQ(world.firstOf("a failure"), "a failure");
 }
 
 TEST(Communicator, ReadsWhereMpirunPutIt) {

@@ -85,7 +85,8 @@ TEST(MpiBricks, AKilledProcessLeavesNothing) {
                               shellWord(SOLIDTEX_EXECUTABLE);
   const Outcome run = testing::runCommand(command, "synthesize " + kStent + " -o " + shellWord(out) +
                                                        " --size 128 --bricks 64 --quiet --report " +
-                                                       shellWord(dir / "r.json"));
+                                                       shellWord(dir / "r.json") + " --preview " +
+                                                       shellWord(dir / "preview"));
   EXPECT_NE(run.exitCode, 0);
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
 }
@@ -102,6 +103,12 @@ TEST(MpiBricks, BadInputIsOneLineFromOneProcess) {
     EXPECT_EQ(run.exitCode, 2) << arguments;
     EXPECT_EQ(run.errLines.size(), 1u) << arguments;
   }
+  // Found by rank 0 alone, after MPI started: the other process must not wait for it.
+  const Outcome missing =
+      runUnderMpirun(2, "synthesize " + kStent + " -o " + shellWord(dir / "missing" / "a.vdb") + kOptions);
+  EXPECT_EQ(missing.exitCode, 1);
+  ASSERT_EQ(missing.errLines.size(), 1u);
+  EXPECT_NE(missing.errLines[0].find("missing"), std::string::npos) << missing.errLines[0];
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
