@@ -91,7 +91,9 @@ void BrickedVdb::addBytes(const std::string& bytes) {
   std::istringstream in(bytes, std::ios::binary);
   openvdb::GridPtrVecPtr grids;
   try {
-    openvdb::io::Stream stream(in);
+    // Loaded now, not delayed: a delayed load maps a temporary copy that the leaves would read
+    // after this stream has gone.
+    openvdb::io::Stream stream(in, /*delayLoad=*/false);
     grids = stream.getGrids();
   } catch (const openvdb::Exception& e) {
     throw InputError("cannot join bricks: " + io::detail::readableReason(e.what()));
