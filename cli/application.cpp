@@ -80,7 +80,7 @@ int runApplication(int argc, char** argv) {
   }
   try {
     const std::string command = app.get_subcommands().front()->get_name();
-    if (command != "synthesize") requireOneProcess(command);
+    if (command != "synthesize" && command != "particles") requireOneProcess(command);
     return application->actions.at(command)();
   } catch (const OptionError& e) {
     return fail(usageMessage(app, e.what()), kUsage);

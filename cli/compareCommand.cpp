@@ -63,6 +63,11 @@ Action addCompareCommand(CLI::App& app) {
   command->add_option(
       "--truth", job->truth,
       "The 3D truth the photo was cut from (.vdb, as `solidtex truth` writes): compare particle volumes");
+  command
+      ->add_option("--bricks", job->brickEdge,
+                   "Particles: also compare the planes within 4 voxels of the faces of bricks of this edge "
+                   "with the rest (seams of `particles --bricks`; on any solid, for a reference)")
+      ->check(CLI::PositiveNumber);
   addSegmentationOptions(*command, job->segmentation);
   return [job, mode] {
     job->mode = parseCompareMode(*mode);

@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "cli/optionChecks.h"
 #include "common/ThreadLimit.h"
+#include "parallel/Communicator.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/particleSolidJob.h"
 
@@ -81,6 +82,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str();
   command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused (1-4096)")
       ->capture_default_str();
+  command->add_option(
+      "--bricks", job->brickEdge,
+      "Place particles brick by brick, in bricks of this edge (at least twice the largest "
+      "particle's reach), each with its neighbours' particles as obstacles; mpirun's processes share "
+      "the bricks");
   command->add_option("--seed", job->seed, "Random seed: same seed, same volume")->capture_default_str();
   auto threads = std::make_shared<int>(0);
   command->add_option("--threads", *threads, "Worker threads (0 = all cores)");
@@ -106,8 +112,9 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
         job->matrix = parseTexture("--matrix", *matrix);
         job->particleTexture = parseTexture("--particle-texture", *particleTexture);
         job->smoothing = parseSmoothing(*smoothing);
-        const ThreadLimit limit(*threads);
+        const ThreadLimit limit(threadsPerProcess(*threads));
         const auto report = runParticleSolid(*job);
+        if (launchedAs().rank != 0) return 0;
         const auto& volume = report["volume"];
         std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
                   << volume["volume_fraction"].get<double>() << " (photo "

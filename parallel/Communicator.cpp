@@ -1,8 +1,11 @@
 #include "parallel/Communicator.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <thread>
 
 #ifdef SOLIDTEX_WITH_MPI
 #include <mpi.h>
@@ -46,11 +49,22 @@ LaunchedAs launchedAs() {
   return launched;
 }
 
+int threadsPerProcess(int asked) {
+  if (asked != 0) return asked;
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int share = std::max(1, cores / launchedAs().localSize);
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  const int bound = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
+  return bound > 0 ? std::min(bound, share) : share;
+}
+
 void requireOneProcess(const std::string& what) {
   const int size = launchedAs().size;
   if (size > 1)
-    throw OptionError(what + " runs as one process, but mpirun started " + std::to_string(size) +
-                      "; only volume exemplars' --bricks are shared among processes");
+    throw OptionError(
+        what + " runs as one process, but mpirun started " + std::to_string(size) +
+        "; only the --bricks of particle solids and volume exemplars are shared among processes");
 }
 
 const Communicator& Communicator::world() {
@@ -98,6 +112,26 @@ std::vector<std::string> Communicator::gatherToRoot(std::string bytes) const {
     for (std::size_t at = 0; at < part.size(); at += kPiece)
       MPI_Recv(part.data() + at, int(std::min(kPiece, part.size() - at)), MPI_BYTE, from, kPieceTag,
                MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    parts.push_back(std::move(part));
+  }
+#endif
+  return parts;
+}
+
+std::vector<std::string> Communicator::allGather(std::string bytes) const {
+  std::vector<std::string> parts;
+  if (size_ == 1) {
+    parts.push_back(std::move(bytes));
+    return parts;
+  }
+#ifdef SOLIDTEX_WITH_MPI
+  const std::uint64_t length = bytes.size();
+  std::vector<std::uint64_t> lengths(std::size_t(size_), 0);
+  MPI_Allgather(&length, 1, MPI_UINT64_T, lengths.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
+  for (int from = 0; from < size_; ++from) {
+    std::string part = from == rank_ ? std::move(bytes) : std::string(lengths[std::size_t(from)], '\0');
+    for (std::size_t at = 0; at < part.size(); at += kPiece)
+      MPI_Bcast(part.data() + at, int(std::min(kPiece, part.size() - at)), MPI_BYTE, from, MPI_COMM_WORLD);
     parts.push_back(std::move(part));
   }
 #endif

@@ -16,6 +16,11 @@ struct LaunchedAs {
 };
 LaunchedAs launchedAs();
 
+/// Threads for this process: `asked`, or when it is 0 the process's share of the machine's cores,
+/// and no more than mpirun bound it to (one core each for up to two processes, a socket beyond):
+/// more threads than bound cores only take turns.
+int threadsPerProcess(int asked);
+
 /// Throws OptionError when mpirun started several processes for `what`, which runs as one.
 void requireOneProcess(const std::string& what);
 
@@ -32,6 +37,8 @@ public:
   /// On rank 0: every rank's bytes in rank order (its own moved in). Elsewhere: sends its own to
   /// rank 0 and returns nothing. Parts of any size: larger than MPI's int counts too.
   std::vector<std::string> gatherToRoot(std::string bytes) const;
+  /// On every rank: every rank's bytes in rank order. Parts of any size.
+  std::vector<std::string> allGather(std::string bytes) const;
   /// On every rank: the first non-empty `text` in rank order (empty when all are), for agreeing
   /// on a failure before work that every rank must share.
   std::string firstOf(const std::string& text) const;

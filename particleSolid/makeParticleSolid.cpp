@@ -189,6 +189,10 @@ void checkParticleSolidOptions(const ParticleSolidOptions& options) {
     throw OptionError("--views must be 3, 4 or 5");
   if (options.particles.shapes < 1 || options.particles.shapes > 4096)
     throw OptionError("--shapes must be in [1, 4096]");
+  if (options.brickEdge < 0)
+    throw OptionError("--bricks must be positive, got " + std::to_string(options.brickEdge));
+  if (options.brickEdge > 0 && options.boundary == Boundary::Periodic)
+    throw OptionError("--bricks does not wrap a periodic volume yet: use --boundary open or walls");
 }
 
 double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer, bool denseColor) {
@@ -261,8 +265,10 @@ const PlacementResult& ParticleSolidBuilder::place() {
   }
   std::optional<PlacementTimeline> timeline;
   const double largest = largestBoxSide(stats) * particleScale;
-  if (const std::optional<Dims> block =
-          options_.timePlacement ? timelineBlock(placed, dims, largest) : std::nullopt) {
+  // Bricks report after each brick: their progress needs no timing.
+  if (const std::optional<Dims> block = options_.timePlacement && options_.brickEdge == 0
+                                            ? timelineBlock(placed, dims, largest)
+                                            : std::nullopt) {
     solid_.timer.start("placement_timing");
     report(progress_, "timing the placement on a smaller block");
     timeline = timePlacement(stats, *factory_, options_.placer, radiusCap, placement, *block);
@@ -276,9 +282,15 @@ const PlacementResult& ParticleSolidBuilder::place() {
     report(progress_, line,
            timeline && stats.areaFraction > 0 ? timeline->timeShare(fraction / stats.areaFraction) : -1);
   };
-  auto field = makeSpaciousnessField(options_.placer, placed, radiusCap, periodic);
-  solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
-  field.reset();  // placement's largest part, given back before the solid is painted
+  if (options_.brickEdge > 0) {
+    solid_.bricks = placeInBricks(
+        stats, *factory_, {placement, options_.placer, radiusCap, options_.brickEdge, options_.brickTeam});
+    solid_.placement = std::move(solid_.bricks->placement);
+  } else {
+    auto field = makeSpaciousnessField(options_.placer, placed, radiusCap, periodic);
+    solid_.placement = placeLargestFirst(stats, *factory_, *field, placement);
+    field.reset();  // placement's largest part, given back before the solid is painted
+  }
   returnFreedMemory();
   if (margin > 0) solid_.placement = cropToCountedBox(std::move(solid_.placement));
   return solid_.placement;

@@ -17,6 +17,7 @@
 #include "particles/ParticleFactory.h"
 #include "particles/fitHullSmoothing.h"
 #include "placement/SpaciousnessField.h"
+#include "placement/placeInBricks.h"
 #include "placement/placeLargestFirst.h"
 #include "placement/sectionSizing.h"
 #include "segmentation/analyzeExemplar.h"
@@ -66,6 +67,12 @@ struct ParticleSolidOptions {
   /// its time left (up to a twentieth more placing; large volumes only, PlacementTimeline). The
   /// solid is the same either way.
   bool timePlacement = false;
+  /// Place in bricks of this edge, one colour of bricks after another (placeInBricks); 0: the whole
+  /// volume at once.
+  int brickEdge = 0;
+  /// With brickEdge: the processes that share the bricks. The solid is the same for any; each
+  /// process places its bricks and ends with the whole placement.
+  BrickTeam brickTeam;
 };
 
 /// How one texture of the solid was made: synthesized (a tiled block of `block` voxels) or projected,
@@ -83,7 +90,10 @@ struct ParticleSolid {
   SmoothingFit smoothing;
   SectionSizing sizing;
   PlacementResult placement;  ///< the placed particles; its ids are moved into `volume`
-  SolidVolume volume;         ///< particle ids and linear RGB colours, dims.count() each
+  /// With ParticleSolidOptions::brickEdge: the bricks, how each went, the colours' times. Its
+  /// placement is moved into `placement`.
+  std::optional<BrickedPlacementResult> bricks;
+  SolidVolume volume;  ///< particle ids and linear RGB colours, dims.count() each
   TextureChoice matrix, particleTexture;
   std::vector<ParticleMesh> meshes;  ///< when asked for, in the volume's index space
   PhaseTimer timer;                  ///< the phases so far; callers may time their own after them

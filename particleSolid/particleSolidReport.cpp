@@ -1,7 +1,11 @@
 #include "particleSolid/particleSolidReport.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
+#include <vector>
 
 #include "Version.h"
 #include "segmentation/reportJson.h"
@@ -27,6 +31,40 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
         {"particles_shrunk", placement.particlesBeforeShrinking < 0
                                  ? 0
                                  : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
+}
+
+nlohmann::json bricksJson(const BrickedPlacementResult& bricked, int edge, int processes) {
+  // Seconds each process spent placing its bricks: the slowest against the mean is the imbalance.
+  std::vector<double> perProcess(std::size_t(processes), 0.0);
+  for (const BrickPlacement& b : bricked.bricks) perProcess[std::size_t(b.rank)] += b.seconds;
+  const double slowest = *std::max_element(perProcess.begin(), perProcess.end());
+  const double total = std::max(1e-9, std::accumulate(perProcess.begin(), perProcess.end(), 0.0));
+  nlohmann::json perBrick = nlohmann::json::array();
+  double sum = 0, sumOfSquares = 0;
+  for (const BrickPlacement& b : bricked.bricks) {
+    perBrick.push_back(
+        {{"box", {{b.brick.lo.x, b.brick.lo.y, b.brick.lo.z}, {b.brick.hi.x, b.brick.hi.y, b.brick.hi.z}}},
+         {"colour", b.colour},
+         {"process", b.rank},
+         {"particles", b.particles},
+         {"volume_fraction", b.volumeFraction},
+         {"seconds", b.seconds},
+         {"stop_reason", b.stopReason}});
+    sum += b.volumeFraction;
+    sumOfSquares += b.volumeFraction * b.volumeFraction;
+  }
+  const double n = double(bricked.bricks.size()), mean = sum / n;
+  return {{"edge", edge},
+          {"count", bricked.bricks.size()},
+          {"halo", bricked.halo},
+          {"rounds", bricked.rounds},
+          {"processes", processes},
+          {"per_process_seconds", perProcess},
+          {"load_imbalance", slowest / (total / double(processes))},
+          {"bytes_exchanged", bricked.bytesExchanged},
+          {"colour_seconds", bricked.colourSeconds},
+          {"volume_fraction_spread", std::sqrt(std::max(0.0, sumOfSquares / n - mean * mean))},
+          {"per_brick", perBrick}};
 }
 
 nlohmann::json textureJson(const TextureChoice& choice) {
@@ -71,6 +109,8 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
                            {"views", options.particles.views},
                            {"photo", toJson(solid.stats)},
                            {"volume", placementJson(solid.placement, solid.stats, solid.voxelsPerPixel)}};
+  if (solid.bricks)
+    report["bricks"] = bricksJson(*solid.bricks, options.brickEdge, std::max(1, options.brickTeam.size));
   const SectionSizing& sizing = solid.sizing;
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;

@@ -13,6 +13,8 @@
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
+#include "validation/arrangement.h"
+#include "validation/brickSeams.h"
 #include "validation/compareSections.h"
 #include "validation/particleVolumes.h"
 #include "voxel/slice.h"
@@ -96,13 +98,6 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   return report;
 }
 
-// Arrangement windows span a few particle diameters, and at least two fit across the volume and
-// across the photo.
-int windowSideFor(double diameter, const Dims& dims, const cv::Size& photo) {
-  const int smallest = std::min({dims.x, dims.y, dims.z, photo.width, photo.height});
-  return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
-}
-
 nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
                                 cv::Mat* plot) {
   if (job.reference)
@@ -123,7 +118,7 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
   SectionOptions sectionOptions = job.sections;
   sectionOptions.minArea = stats.minArea * scale * scale;
   const cv::Mat labels = photoLabels(stats, scale);
-  sectionOptions.windowSide = windowSideFor(diameter, volume.dims, labels.size());
+  sectionOptions.windowSide = arrangementWindowSide(diameter, volume.dims, labels.size());
   const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
   const SectionStatistics photoSections = measureLabelImage(labels, sectionOptions);
   const SectionComparison shapes = compareSections(photoSections, sections, diameter);
@@ -161,6 +156,9 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
       {"particle_diameter", diameter}};
   if (job.truth)
     report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
+  if (job.brickEdge > 0)
+    report["brick_seams"] =
+        brickSeamsReport(volume.particleId, volume.dims, job.brickEdge, sectionOptions.windowSide);
   if (plot) *plot = plotComparison(data, report);
   return report;
 }
@@ -193,6 +191,7 @@ cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const 
 nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar, const SolidVolume& volume,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
+  if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},
@@ -209,6 +208,21 @@ bool comparesParticles(const CompareJob& job, const SolidVolume& volume) {
 }
 
 }  // namespace
+
+nlohmann::json brickSeamsReport(const std::vector<std::int32_t>& ids, const Dims& dims, int brickEdge,
+                                int windowSide) {
+  constexpr int kDepth = 4;
+  const BrickSeams s = brickSeams(ids, dims, brickEdge, kDepth, windowSide);
+  return {{"edge", brickEdge},
+          {"depth", kDepth},
+          {"window_side", windowSide},
+          {"face_planes", s.facePlanes},
+          {"other_planes", s.otherPlanes},
+          {"face_fraction", s.faceFraction},
+          {"other_fraction", s.otherFraction},
+          {"face_window_spread", s.faceWindowSpread},
+          {"other_window_spread", s.otherWindowSpread}};
+}
 
 CompareMode parseCompareMode(const std::string& name) {
   if (name == "auto") return CompareMode::Auto;

@@ -35,7 +35,13 @@ struct CompareJob {
   std::optional<std::string> truth;      ///< .vdb of the 3D truth the photo was cut from (`solidtex truth`)
   std::optional<std::string> reference;  ///< continuous: a second photo of the material, the reference level
   ContinuousQualityOptions quality;      ///< continuous: how slices are measured
+  int brickEdge = 0;  ///< particles: also measure seams along the faces of bricks of this edge; 0: none
 };
+
+/// The report of brickSeams for a particle id volume: the planes within 4 voxels of the inner faces
+/// of bricks of `brickEdge` against the rest, in arrangement windows of `windowSide`.
+nlohmann::json brickSeamsReport(const std::vector<std::int32_t>& ids, const Dims& dims, int brickEdge,
+                                int windowSide);
 
 /// The comparison itself, on a photo (CV_32FC3 sRGB, as loadPhoto returns), a solid and, for a
 /// continuous one, a reference photo (or an empty Mat) in memory; the job's paths only label them

@@ -5,14 +5,20 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "common/Error.h"
+#include "common/failureText.h"
 #include "common/memoryBudget.h"
 #include "io/imageIO.h"
 #include "io/vdbIO.h"
 #include "mesh/meshTopology.h"
 #include "mesh/writeParticleMeshes.h"
+#include "parallel/Communicator.h"
 #include "particleSolid/particleSolidReport.h"
+#include "pipeline/compareJob.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/warnOfDroppedRegions.h"
+#include "validation/arrangement.h"
+#include "validation/compareSections.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {
@@ -41,26 +47,46 @@ nlohmann::json meshReport(OutputFiles& outputs, const std::string& path,
 }  // namespace
 
 nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
-  ProgressLine line(job.progress);
+  if (launchedAs().size > 1 && job.brickEdge <= 0)
+    throw OptionError("mpirun's processes share particle placement in bricks only: give --bricks");
+  const Communicator& world = Communicator::world();
+  const bool root = world.rank() == 0;
+  ProgressLine line(job.progress && root);
   ParticleSolidOptions options = job;
   options.meshes = job.meshPath.has_value();
   options.denseColor = job.exports.tiff || job.exports.npy || job.exports.vti;
   options.timePlacement = job.progress;
-  ParticleSolidBuilder builder(
-      options, [&](const std::string& step, double fraction) { line.update(step, fraction); });
+  if (world.size() > 1)
+    options.brickTeam = {world.rank(), world.size(),
+                         [&world](std::string bytes) { return world.allGather(std::move(bytes)); }};
+  // Checks that may fail on one process alone (rank 0's outputs) are agreed on before the work: a
+  // process that left alone would leave the others waiting for it.
   OutputFiles outputs;
-  outputs.addInput(job.photo);
-  if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
-  addVolumeOutputs(outputs, job.output, job.report, job.preview);
-  addVolumeExports(outputs, job.exports);
-  if (job.meshPath) addParticleMeshes(outputs, "--meshes", *job.meshPath);
+  std::optional<ParticleSolidBuilder> builder;
+  std::string failure;
+  try {
+    builder.emplace(options, [&](const std::string& step, double fraction) { line.update(step, fraction); });
+    if (root) {
+      outputs.addInput(job.photo);
+      if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
+      addVolumeOutputs(outputs, job.output, job.report, job.preview);
+      addVolumeExports(outputs, job.exports);
+      if (job.meshPath) addParticleMeshes(outputs, "--meshes", *job.meshPath);
+    }
+  } catch (...) {
+    if (world.size() == 1) throw;
+    failure = failureText(std::current_exception());
+  }
+  if (const std::string first = world.firstOf(failure); !first.empty()) throwFailureText(first);
 
   const cv::Mat photo = loadPhoto(job.photo);
-  warnOfDroppedRegions(builder.analyze(photo, job.photo), &line);
-  builder.makeParticles();
-  builder.place();
+  const ExemplarStats& stats = builder->analyze(photo, job.photo);
+  if (root) warnOfDroppedRegions(stats, &line);
+  builder->makeParticles();
+  builder->place();
   line.done();
-  ParticleSolid solid = builder.finish();
+  if (!root) return nlohmann::json::object();  // rank 0 paints and writes the whole placement
+  ParticleSolid solid = builder->finish();
   solid.volume.metadata = particleSolidMetadata(solid, job, job.commandLine);
 
   solid.timer.start("write");
@@ -74,7 +100,14 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   const auto exported =
       writeVolumeExports(outputs, job.exports, solid.volume, {1 / solid.voxelsPerPixel, "pixel"});
   if (!exported.empty()) written["exports"] = exported;
-  nlohmann::json report = particleSolidReport(solid, job);
+  nlohmann::json report = particleSolidReport(solid, options);
+  if (solid.bricks) {
+    const double scale = solid.voxelsPerPixel;
+    const int window = arrangementWindowSide(meanParticleDiameter(solid.stats) * scale, solid.volume.dims,
+                                             photoLabels(solid.stats, scale).size());
+    report["bricks"]["seams"] =
+        brickSeamsReport(solid.volume.particleId, solid.volume.dims, job.brickEdge, window);
+  }
   outputs.write(job.output, [&](const std::string& path) { writeVdb(path, std::move(solid.volume)); });
 
   report["outputs"] = written;

@@ -1,17 +1,14 @@
-#include <sched.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <new>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "common/Error.h"
 #include "common/ProgressLine.h"
 #include "common/ThreadLimit.h"
 #include "common/bricksOf.h"
+#include "common/failureText.h"
 #include "common/memoryBudget.h"
 #include "common/secondsSince.h"
 #include "io/BrickedVdb.h"
@@ -45,40 +42,9 @@ void checkBrickedJob(const SynthesizeVolumeJob& job, int processes) {
                       " brick(s): give --bricks an edge that makes at least one brick per process");
 }
 
-// A failure as it travels between processes: its exit kind, then its one line.
-std::string failureOf(const std::exception_ptr& failure) {
-  try {
-    std::rethrow_exception(failure);
-  } catch (const OptionError& e) {
-    return std::string("2") + e.what();
-  } catch (const std::bad_alloc&) {
-    return "1out of memory (see --max-memory; smaller bricks need less)";
-  } catch (const std::exception& e) {
-    return std::string("1") + e.what();
-  }
-}
-
-[[noreturn]] void throwFailure(const std::string& failure) {
-  if (failure.front() == '2') throw OptionError(failure.substr(1));
-  throw InputError(failure.substr(1));
-}
-
 // Bricks [first, last) of `count`: contiguous runs, as even as they can be.
 std::pair<std::size_t, std::size_t> bricksOfRank(std::size_t count, int rank, int size) {
   return {count * std::size_t(rank) / std::size_t(size), count * std::size_t(rank + 1) / std::size_t(size)};
-}
-
-// Threads per process when none are asked for: its share of the machine's cores, and no more than
-// mpirun bound it to (one core each for up to two processes, a socket beyond): more threads than
-// bound cores only take turns.
-int threadsPerProcess(int asked) {
-  if (asked != 0) return asked;
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-  const int share = std::max(1, cores / launchedAs().localSize);
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  const int bound = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
-  return bound > 0 ? std::min(bound, share) : share;
 }
 
 // Peak bytes of a process: one brick's work as the whole volume's would be (56 a voxel), the trees
@@ -156,7 +122,7 @@ ProcessPart makeBricks(const SynthesizeVolumeJob& job, const std::vector<Box>& b
       trees = BrickedVdb();
     }
   } catch (...) {
-    part.failure = failureOf(std::current_exception());
+    part.failure = failureText(std::current_exception());
   }
   part.seconds = secondsSince(start);
   return part;
@@ -218,9 +184,9 @@ std::vector<ProcessPart> joinParts(std::vector<std::string>&& gathered, ProcessP
   for (std::size_t r = 1; r < gathered.size(); ++r) parts.push_back(decode(std::move(gathered[r])));
   for (std::size_t r = 0; r < parts.size(); ++r)
     if (!parts[r].failure.empty())
-      throwFailure(r == 0 ? parts[r].failure
-                          : parts[r].failure.substr(0, 1) + "process " + std::to_string(r) + ": " +
-                                parts[r].failure.substr(1));
+      throwFailureText(r == 0 ? parts[r].failure
+                              : parts[r].failure.substr(0, 1) + "process " + std::to_string(r) + ": " +
+                                    parts[r].failure.substr(1));
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t r = 1; r < parts.size(); ++r) {
     trees.addBytes(parts[r].trees);
@@ -279,9 +245,9 @@ nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
       addVolumeOutputs(outputs, job.output, job.report, job.preview);
     }
   } catch (...) {
-    failure = failureOf(std::current_exception());
+    failure = failureText(std::current_exception());
   }
-  if (const std::string first = world.firstOf(failure); !first.empty()) throwFailure(first);
+  if (const std::string first = world.firstOf(failure); !first.empty()) throwFailureText(first);
 
   const ThreadLimit threads(threadsPerProcess(job.synthesis.threads));
   BrickedVdb trees;
@@ -293,7 +259,7 @@ nlohmann::json runBrickedVolumeSynthesis(const SynthesizeVolumeJob& job) {
   std::vector<std::string> gathered = world.gatherToRoot(encode(mine));
   seconds.gather = secondsSince(gatherStart);
   if (!root) {
-    if (!myFailure.empty()) throwFailure(myFailure);  // rank 0 says it; this exit code only tells mpirun
+    if (!myFailure.empty()) throwFailureText(myFailure);  // rank 0 says it; this exit code only tells mpirun
     return nlohmann::json::object();
   }
   const std::vector<ProcessPart> parts = joinParts(std::move(gathered), std::move(mine), trees, seconds);

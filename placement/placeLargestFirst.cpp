@@ -29,7 +29,6 @@ constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
 constexpr int kRadiusSteps = 4;
 constexpr int kFailuresToRetire = 8;
 constexpr int kMinPilotShapes = 8, kMaxPilotShapes = 96;
-constexpr double kFirstPassShare = 0.85;
 constexpr double kShrink = 0.85;  // particles' size per shrink step once nothing fits
 constexpr int kMaxShrinks = 3;
 constexpr double kPilotPrecision = 0.03;              // standard error of the mean / mean
@@ -103,15 +102,32 @@ void checkOptions(const ExemplarStats& stats, const PlacementOptions& options,
   if (options.candidatesPerTry < 1)
     throw InputError("placement: candidates per try must be at least 1, got " +
                      std::to_string(options.candidatesPerTry));
+  if (std::any_of(options.quotaDither.begin(), options.quotaDither.end(),
+                  [](double d) { return !(d >= 0 && d < 1); }))
+    throw std::invalid_argument("placement: quota dithers must be in [0, 1)");
+  if (!(options.firstPassShare > 0 && options.firstPassShare <= 1))
+    throw std::invalid_argument("placement: the first pass's share must be in (0, 1]");
+  if (options.firstPassDownTo && (*options.firstPassDownTo < 0 || *options.firstPassDownTo >= kBins))
+    throw std::invalid_argument("placement: the first pass must go down to a bin in [0, 9]");
   if (options.progressEvery < 1)
     throw InputError("placement: progress must come every particle or less often, got every " +
                      std::to_string(options.progressEvery));
-  if (options.counted) {
-    const Box& c = *options.counted;
-    if (c.empty() || !options.dims.contains(c.lo.x, c.lo.y, c.lo.z) ||
-        !options.dims.contains(c.hi.x - 1, c.hi.y - 1, c.hi.z - 1))
-      throw std::invalid_argument("placement: the counted box is not inside the volume");
-  }
+  const auto inside = [&](const std::optional<Box>& box) {
+    return !box || (!box->empty() && options.dims.contains(box->lo.x, box->lo.y, box->lo.z) &&
+                    options.dims.contains(box->hi.x - 1, box->hi.y - 1, box->hi.z - 1));
+  };
+  if (!inside(options.counted))
+    throw std::invalid_argument("placement: the counted box is not inside the volume");
+  if (!inside(options.spots))
+    throw std::invalid_argument("placement: the spots' box is not inside the volume");
+  if (options.ownVoxels && *options.ownVoxels == 0)
+    throw std::invalid_argument("placement: a brick's own voxels must not be 0");
+  for (const PlacementObstacle& o : options.obstacles)
+    if (o.bin < 0 || o.bin >= kBins || o.voxelCount < o.voxels.size() ||
+        (!options.periodic && std::any_of(o.voxels.begin(), o.voxels.end(), [&](const Voxel& v) {
+          return !options.dims.contains(v.x, v.y, v.z);
+        })))
+      throw std::invalid_argument("placement: an obstacle lies outside the volume or has no valid bin");
   if (!(options.dims == field.dims()))
     throw std::invalid_argument("placement: the options' dims differ from the spaciousness field's");
   if (options.periodic != field.periodic())
@@ -148,6 +164,38 @@ std::vector<PhasePlan> phasePlans(const PlacementOptions& options) {
   return plans;
 }
 
+// Expected particle volumes per bin start from a few pilot shapes of the bin and follow the
+// shapes placed since. The largest bins' counts are set before most of their shapes exist, and
+// every voxel they take beyond plan is taken from the smallest bin, placed last: the start must
+// be right.
+PlacementPilot pilotOf(const PhasePlan& plan, const BinPairs& pairs, const ParticleFactory& factory,
+                       std::uint64_t seed) {
+  PlacementPilot pilot;
+  tbb::parallel_for(0, kBins, [&](int b) {
+    const auto& binPairs = pairs[std::size_t(b)];
+    if (binPairs.empty()) return;
+    std::vector<std::size_t> all(binPairs.size());
+    std::iota(all.begin(), all.end(), 0);
+    Rng rng(deriveSeed(seed, kPilotStream + std::uint64_t(b) + std::uint64_t(plan.index * kBins)));
+    // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
+    double sum = 0, sumOfSquares = 0;
+    int n = 0;
+    while (n < kMaxPilotShapes) {
+      ++n;
+      const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
+      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
+      const auto voxels = double(placement::detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
+      sum += voxels;
+      sumOfSquares += voxels * voxels;
+      const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
+      if (n >= kMinPilotShapes && variance / n <= kPilotPrecision * kPilotPrecision * mean * mean) break;
+    }
+    pilot.shapes[std::size_t(b)] = n;
+    pilot.voxels[std::size_t(b)] = sum;
+  });
+  return pilot;
+}
+
 // A phase's bins: their (width, height) pairs and shares, which are still open, the volumes their
 // shapes take, and the shapes themselves.
 struct Phase {
@@ -155,7 +203,7 @@ struct Phase {
         const PlacementOptions& options)
       : plan(plan),
         pairs(pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights)),
-        passShare(plan.index == 0 ? kFirstPassShare : 1),
+        passShare(plan.index == 0 ? options.firstPassShare : 1),
         shapes(factory, options.seed, plan.index, plan.scale) {
     double total = 0;
     for (int b = 0; b < kBins; ++b) total += share[std::size_t(b)] = totalWeight(pairs[std::size_t(b)]);
@@ -163,7 +211,11 @@ struct Phase {
       share[std::size_t(b)] = total > 0 ? share[std::size_t(b)] / total : 0;
       open[std::size_t(b)] = share[std::size_t(b)] > 0 && !pairs[std::size_t(b)].empty();
     }
-    estimateVolumes(factory, options.seed);
+    const PlacementPilot pilot = std::size_t(plan.index) < options.pilots.size()
+                                     ? options.pilots[std::size_t(plan.index)]
+                                     : pilotOf(plan, pairs, factory, options.seed);
+    made = pilot.shapes;
+    for (int b = 0; b < kBins; ++b) madeVoxels[std::size_t(b)] = pilot.voxels[std::size_t(b)];
   }
 
   // Expected voxels of a particle of bin b: the mean of the shapes made for it so far.
@@ -181,38 +233,13 @@ struct Phase {
   bool roundUp = false;  ///< the last pass over the bins placed nothing: quotas round up
   double passShare;      ///< of each bin's quota that a pass places
   placement::detail::ShapeSupply shapes;
-
-private:
-  // Expected particle volumes per bin start from a few pilot shapes of the bin and follow the
-  // shapes placed since. The largest bins' counts are set before most of their shapes exist, and
-  // every voxel they take beyond plan is taken from the smallest bin, placed last: the start must
-  // be right.
-  void estimateVolumes(const ParticleFactory& factory, std::uint64_t seed) {
-    tbb::parallel_for(0, kBins, [&](int b) {
-      const auto& binPairs = pairs[std::size_t(b)];
-      if (binPairs.empty()) return;
-      std::vector<std::size_t> all(binPairs.size());
-      std::iota(all.begin(), all.end(), 0);
-      Rng rng(deriveSeed(seed, kPilotStream + std::uint64_t(b) + std::uint64_t(plan.index * kBins)));
-      // Until the mean is known to kPilotPrecision: a bin's sizes may span a factor of ten in volume.
-      double sum = 0, sumOfSquares = 0;
-      int n = 0;
-      while (n < kMaxPilotShapes) {
-        ++n;
-        const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
-        const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
-        const auto voxels =
-            double(placement::detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
-        sum += voxels;
-        sumOfSquares += voxels * voxels;
-        const double mean = sum / n, variance = std::max(0.0, sumOfSquares / n - mean * mean);
-        if (n >= kMinPilotShapes && variance / n <= kPilotPrecision * kPilotPrecision * mean * mean) break;
-      }
-      made[std::size_t(b)] = n;
-      madeVoxels[std::size_t(b)] = sum;
-    });
-  }
 };
+
+int spotsToAsk(const PlacementOptions& options) {
+  if (!options.spots) return options.candidatesPerTry;
+  const double larger = double(options.dims.count()) / double(options.spots->dims().count());
+  return int(std::min(1e6, std::ceil(options.candidatesPerTry * larger)));
+}
 
 class Placer {
 public:
@@ -225,13 +252,16 @@ public:
         rng_(deriveSeed(options.seed, kPlacementStream)),
         pairRng_(deriveSeed(options.seed, kPairStream)),
         counted_(options.counted.value_or(Box::of(options.dims))),
-        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(counted_.dims().count()))),
+        idsBox_(options.idsEverywhere ? Box::of(options.dims) : counted_),
+        fillVoxels_(options.ownVoxels.value_or(counted_.dims().count())),
+        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(fillVoxels_))),
         occupied_(options.dims.count()),
         tried_(options.dims.count()) {
     result_.dims = options.dims;
     result_.periodic = options.periodic;
     result_.counted = counted_;
-    result_.ids.assign(counted_.dims().count(), 0);
+    result_.ids.assign(idsBox_.dims().count(), 0);
+    takeObstacles();
   }
 
   // The field may still be taking the last particle when an exception leaves run(): wait for it,
@@ -245,6 +275,11 @@ public:
 
   PlacementResult run() {
     if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
+    if (const std::optional<int> smallest = options_.firstPassDownTo) {
+      startPhase(phasePlans(options_).front());
+      if (const std::optional<std::string> reason = pass(*smallest)) return finish(*reason);
+      return finish("first pass down to bin " + std::to_string(*smallest) + " done");
+    }
     for (const PhasePlan& plan : phasePlans(options_)) {
       startPhase(plan);
       if (const std::optional<std::string> reason = fillPhase()) return finish(*reason);
@@ -256,6 +291,25 @@ public:
   }
 
 private:
+  // The obstacles go into the field as one insertion: one update for all of them.
+  void takeObstacles() {
+    std::vector<Voxel> all;
+    for (const PlacementObstacle& obstacle : options_.obstacles) {
+      std::size_t counted = 0;
+      for (const Voxel& v : obstacle.voxels) {
+        const Voxel inside = options_.periodic ? options_.dims.wrap(v) : v;
+        occupied_.set(options_.dims.index(inside));
+        counted += counted_.contains(inside) ? 1 : 0;
+      }
+      all.insert(all.end(), obstacle.voxels.begin(), obstacle.voxels.end());
+      if (options_.ownVoxels && !obstacle.own) continue;
+      placedVoxels_ += counted;
+      countedPerBin_[std::size_t(obstacle.bin)] +=
+          double(counted) / double(std::max<std::size_t>(1, obstacle.voxelCount));
+    }
+    if (!all.empty()) field_.insert(all);
+  }
+
   void startPhase(const PhasePlan& plan) {
     if (phase_) phase_->shapes.finish();
     phase_.emplace(plan, stats_, factory_, options_);
@@ -272,13 +326,7 @@ private:
     Phase& phase = *phase_;
     for (;;) {
       const std::size_t placedBefore = result_.particles.size();
-      for (int b = kBins - 1; b >= 0; --b) {
-        while (phase.open[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
-               countedPerBin_[std::size_t(b)] < quota(b))
-          if (!attempt(b) && phase.pairs[std::size_t(b)].empty()) phase.open[std::size_t(b)] = false;
-        if (fractionReached()) return "area fraction reached";
-        if (limitReached()) return "particle limit reached";
-      }
+      if (const std::optional<std::string> reason = pass(0)) return reason;
       // Every quota met to the nearest particle, and still volume to fill: rounding up places more
       // (some open bin is then below its rounded-up share, and nothing is held back), so every pass
       // places a particle or closes a bin, and the loop ends.
@@ -289,8 +337,33 @@ private:
     }
   }
 
-  double fraction() const { return double(placedVoxels_) / double(counted_.dims().count()); }
-  bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_; }
+  // One pass over the phase's bins from the largest down to `smallest`, each placing the particles it
+  // misses; the reason when the fraction or the particle limit is reached.
+  std::optional<std::string> pass(int smallest) {
+    Phase& phase = *phase_;
+    for (int b = kBins - 1; b >= smallest; --b) {
+      while (phase.open[std::size_t(b)] && !fractionReached() && !limitReached() && !overfills(b) &&
+             countedPerBin_[std::size_t(b)] < quota(b))
+        if (!attempt(b) && phase.pairs[std::size_t(b)].empty()) phase.open[std::size_t(b)] = false;
+      if (fractionReached()) return "area fraction reached";
+      if (limitReached()) return "particle limit reached";
+    }
+    return std::nullopt;
+  }
+
+  double fraction() const { return double(placedVoxels_) / double(fillVoxels_); }
+  bool fractionReached() const { return double(placedVoxels_) >= targetVoxels_ - brickSlack(); }
+
+  // A brick stops within half a particle of its share, above or below, as its last particle ends
+  // past the share by half one on average: the bricks' last particles would otherwise overfill the
+  // volume by half a particle each. Half the expected volume of the smallest open bin, which the
+  // last particles come from.
+  double brickSlack() const {
+    if (!options_.ownVoxels || !phase_) return 0;
+    for (int b = 0; b < kBins; ++b)
+      if (phase_->open[std::size_t(b)]) return 0.5 * phase_->expectedVolume(b);
+    return 0;
+  }
   bool limitReached() const {
     return options_.maxParticles > 0 && int(result_.particles.size()) >= options_.maxParticles;
   }
@@ -310,7 +383,7 @@ private:
   // is chosen so that the open bins' missing particles fill the missing volume. Rounded to the
   // nearest: rounding every bin up would overfill the volume by half a particle of each large bin
   // before the smallest bin, which comes last, gets its share. The first pass over the bins places
-  // kFirstPassShare of each; the second, with the volumes the shapes really took, the rest, so that
+  // firstPassShare (0.85) of each; the second, with the volumes the shapes really took, the rest, so that
   // the luck of the shapes spreads over every bin instead of landing on the smallest alone.
   int quota(int b) const {
     const Phase& phase = *phase_;
@@ -321,7 +394,8 @@ private:
         perParticle += phase.share[std::size_t(i)] * phase.expectedVolume(i);
       }
     const double share = phase.passShare * phase.share[std::size_t(b)] * missing / perParticle;
-    return int(phase.roundUp ? std::ceil(share - 1e-9) : std::round(share));
+    return int(phase.roundUp ? std::ceil(share - 1e-9)
+                             : std::floor(share + options_.quotaDither[std::size_t(b)]));
   }
 
   // Pairs of the bin in random order, by weight, until one is placed; false when none fits.
@@ -377,20 +451,32 @@ private:
     const float cap = field_.maxRadius();
     triedSpots_.clear();
     std::optional<Voxel> found;
-    if (options_.arrangement == Arrangement::Uniform)
-      found =
-          firstFit(shape, field_.randomFit(std::min(cap, shape.innerRadius), options_.candidatesPerTry, rng_),
-                   std::min(cap, shape.innerRadius));
+    if (options_.arrangement == Arrangement::Uniform) {
+      const float radius = std::min(cap, shape.innerRadius);
+      found = firstFit(shape, ownSpots(field_.randomFit(radius, spotsAsked_, rng_)), radius);
+    }
     for (int step = 0; step < kRadiusSteps && !found; ++step) {
       const float t = float(step) / float(kRadiusSteps - 1);
       const float radius = std::min(cap, shape.innerRadius + t * (shape.outerRadius - shape.innerRadius));
-      const std::vector<Voxel> spots = field_.bestFit(radius, options_.candidatesPerTry, rng_);
+      std::vector<Voxel> spots = field_.bestFit(radius, spotsAsked_, rng_);
       if (spots.empty()) break;  // nothing this spacious, so nothing more spacious either
-      found = firstFit(shape, spots, radius);
+      found = firstFit(shape, ownSpots(std::move(spots)), radius);
     }
     for (const Voxel& spot : triedSpots_) tried_.clearWordOf(options_.dims.index(spot));
     if (found) commit(shape, *found, size, bin);
     return found.has_value();
+  }
+
+  // The field's spots inside PlacementOptions::spots, the first candidatesPerTry of them: the field
+  // is asked for as many more as the volume is larger than that box, so that about as many are left.
+  std::vector<Voxel> ownSpots(std::vector<Voxel> spots) const {
+    if (!options_.spots) return spots;
+    const Box& own = *options_.spots;
+    spots.erase(std::remove_if(spots.begin(), spots.end(), [&](const Voxel& v) { return !own.contains(v); }),
+                spots.end());
+    if (spots.size() > std::size_t(options_.candidatesPerTry))
+      spots.resize(std::size_t(options_.candidatesPerTry));
+    return spots;
   }
 
   // The first of the spots, each valued at least `radius` by the field, where the shape fits.
@@ -413,17 +499,18 @@ private:
     const int id = int(result_.particles.size()) + 1;
     const Voxel origin = placement::detail::originAt(shape, spot);
     volumeVoxels_.clear();
-    const Dims countedIds = counted_.dims();
+    const Dims idsDims = idsBox_.dims();
     std::size_t counted = 0;
     for (const Voxel& v : shape.voxels) {
       const Voxel w{origin.x + v.x, origin.y + v.y, origin.z + v.z};  // whole: the field wraps it itself
       const Voxel inside = options_.periodic ? options_.dims.wrap(w) : w;
       occupied_.set(options_.dims.index(inside));
       volumeVoxels_.push_back(w);
-      if (!counted_.contains(inside)) continue;
-      result_.ids[countedIds.index(inside.x - counted_.lo.x, inside.y - counted_.lo.y,
-                                   inside.z - counted_.lo.z)] = id;
-      ++counted;
+      if (idsBox_.contains(inside))
+        result_
+            .ids[idsDims.index(inside.x - idsBox_.lo.x, inside.y - idsBox_.lo.y, inside.z - idsBox_.lo.z)] =
+            id;
+      counted += counted_.contains(inside) ? 1 : 0;
     }
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
@@ -461,6 +548,10 @@ private:
   Rng rng_;      ///< best-fit draws
   Rng pairRng_;  ///< the order pairs are tried in
   Box counted_;  ///< where the fraction and the particles per bin are counted
+  Box idsBox_;   ///< where ids are kept
+  int spotsAsked_ =
+      spotsToAsk(options_);     ///< of the field per query: candidatesPerTry, more with a spots box
+  std::size_t fillVoxels_ = 0;  ///< whose fraction placement reaches: the counted box's, or ownVoxels
   double targetVoxels_ = 0;
   std::size_t placedVoxels_ = 0;  ///< inside counted_
   std::array<double, kBins>
@@ -487,6 +578,26 @@ Arrangement parseArrangement(const std::string& name) {
 
 const char* arrangementName(Arrangement arrangement) {
   return arrangement == Arrangement::BestFit ? "best-fit" : "uniform";
+}
+
+std::array<double, 10> firstPhaseBinShares(const ExemplarStats& stats, const PlacementOptions& options) {
+  const BinPairs pairs = pairsPerBin(
+      stats, phasePlans(options).front().photoShares ? std::vector<double>{} : options.particleWeights);
+  std::array<double, kBins> shares{};
+  double total = 0;
+  for (int b = 0; b < kBins; ++b) total += shares[std::size_t(b)] = totalWeight(pairs[std::size_t(b)]);
+  for (double& share : shares) share = total > 0 ? share / total : 0;
+  return shares;
+}
+
+std::vector<PlacementPilot> placementPilots(const ExemplarStats& stats, const ParticleFactory& factory,
+                                            const PlacementOptions& options) {
+  std::vector<PlacementPilot> pilots;
+  for (const PhasePlan& plan : phasePlans(options))
+    pilots.push_back(
+        pilotOf(plan, pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights),
+                factory, options.seed));
+  return pilots;
 }
 
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,

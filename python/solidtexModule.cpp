@@ -234,6 +234,7 @@ ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
   options.particles.shapes = int(keywords.integer("shapes").value_or(options.particles.shapes));
   options.smoothing = keywords.number("smoothing");
   options.seed = seedOf(keywords);
+  options.brickEdge = int(keywords.integer("bricks").value_or(0));
   return options;
 }
 
@@ -599,8 +600,8 @@ PYBIND11_MODULE(solidtex, m) {
         "Makes a particle solid from a photo (a path or a numpy array, as analyze takes): a dict of numpy "
         "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB) and the "
         "report (a dict). Keywords as the command line's options: size, dims, scale, placer, sizing, "
-        "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, seed, threads, mask, "
-        "invert, split, min_area; output (.vdb) and report (.json) write files; progress shows the "
+        "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
+        "mask, invert, split, min_area; output (.vdb) and report (.json) write files; progress shows the "
         "progress line. Ctrl-C stops it and leaves no file.");
   m.def("synthesize", &synthesize, py::arg("exemplar"),
         "Synthesises a continuous solid from a photo (a path or a numpy image, as analyze takes) or a "

@@ -22,6 +22,11 @@ std::vector<double> windowFractions(const cv::Mat& labels, int side) {
   return fractions;
 }
 
+int arrangementWindowSide(double diameter, const Dims& dims, const cv::Size& photo) {
+  const int smallest = std::min({dims.x, dims.y, dims.z, photo.width, photo.height});
+  return std::clamp(int(std::lround(3 * diameter)), 4, std::max(4, smallest / 2));
+}
+
 std::vector<double> nearestNeighbourDistances(const std::vector<cv::Point2d>& centres,
                                               const std::vector<bool>& counted, cv::Size image) {
   std::vector<double> distances;

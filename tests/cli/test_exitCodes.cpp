@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/vdbIO.h"
 #include "tests/cli/runSolidtex.h"
@@ -259,4 +260,40 @@ TEST(ExitCodes, AMinimumAreaThatDropsMostOfWhatStandsOutIsWarnedOf) {
   ASSERT_EQ(dropped.errLines.size(), 1u);
   EXPECT_EQ(dropped.errLines[0].rfind("solidtex: warning: ", 0), 0u) << dropped.errLines[0];
   EXPECT_NE(dropped.errLines[0].find("(see --min-area)"), std::string::npos) << dropped.errLines[0];
+}
+
+TEST(ExitCodes, ParticleBricksRefuseWhatTheyCannotUse) {
+  const fs::path dir = emptyFolder("particle_bricks");
+  const std::string out = " -o " + shellWord(dir / "a.vdb") + " --report " + shellWord(dir / "r.json");
+  expectRefused(
+      {"particles " + kPhoto + out + " --size 64 --bricks -8",
+       "particles " + kPhoto + out + " --size 64 --bricks 32 --periodic",
+       "compare " + kPhoto + " " + shellWord(fs::path(SOLIDTEX_DATA_DIR) / "volumes" / "ct_stent_64.vdb") +
+           " --mode continuous --bricks 32"},
+      2, dir);
+  // The particles' reach is known from the photo: bricks narrower than twice it fail after analysis.
+  expectRefused({"particles " + kPhoto + out + " --size 64 --bricks 8"}, 1, dir);
+}
+
+// A solid placed in bricks: its report says the bricks, the processes and the seams, and `compare
+// --bricks` measures the same seams on it.
+TEST(ExitCodes, ParticleBricksReportTheirBricksAndSeams) {
+  const fs::path dir = emptyFolder("particle_bricks_report");
+  const fs::path out = dir / "a.vdb", report = dir / "r.json", compared = dir / "c.json";
+  const Outcome run = runSolidtex("particles " + kPhoto + " -o " + shellWord(out) + " --size 96 --bricks 48" +
+                                  " --quiet --report " + shellWord(report));
+  ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? run.out : run.errLines[0]);
+  EXPECT_NE(run.out.find("of 8 bricks"), std::string::npos) << run.out;
+  const nlohmann::json bricks = nlohmann::json::parse(readFile(report))["bricks"];
+  EXPECT_EQ(bricks["count"], 8);
+  EXPECT_EQ(bricks["processes"], 1);
+  EXPECT_EQ(bricks["per_brick"].size(), 8u);
+  EXPECT_EQ(bricks["colour_seconds"].size(), 8u);
+  EXPECT_EQ(bricks["bytes_exchanged"], 0);
+  EXPECT_GT(bricks["seams"]["face_planes"].get<int>(), 0);
+  ASSERT_EQ(
+      runSolidtex("compare " + kPhoto + " " + shellWord(out) + " --bricks 48 --report " + shellWord(compared))
+          .exitCode,
+      0);
+  EXPECT_EQ(nlohmann::json::parse(readFile(compared))["brick_seams"], bricks["seams"]);
 }

@@ -32,6 +32,7 @@ TEST(Communicator, AProcessStartedAloneIsRankZeroOfOne) {
   ASSERT_EQ(parts.size(), 1u);
   EXPECT_EQ(parts[0], "abc");
   EXPECT_EQ(world.firstOf("a failure"), "a failure");
+  EXPECT_EQ(world.allGather("xyz"), std::vector<std::string>{"xyz"});
 }
 
 TEST(Communicator, ReadsWhereMpirunPutIt) {

@@ -75,6 +75,29 @@ TEST(MpiBricks, OneAndTwoProcessesWriteTheSameBytesAsTheUnbrickedVoxels) {
   EXPECT_TRUE(a.color == b.color);
 }
 
+const std::string kGravel = shellWord(fs::path(SOLIDTEX_DATA_DIR) / "particles" / "gravel.png");
+
+// Particles: each colour's bricks are dealt to the processes, which exchange them before the next.
+TEST(MpiBricks, OneAndTwoProcessesPlaceTheSameParticles) {
+  const fs::path dir = emptyFolder("particles_same_bytes");
+  std::string bytes[2];
+  for (const int processes : {1, 2}) {
+    const fs::path out = dir / ("np" + std::to_string(processes) + ".vdb");
+    const fs::path report = dir / ("np" + std::to_string(processes) + ".json");
+    const Outcome run = runUnderMpirun(processes, "particles " + kGravel + " -o " + shellWord(out) +
+                                                      " --size 128 --bricks 64 --quiet --seed 2 --report " +
+                                                      shellWord(report));
+    ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? "" : run.errLines.front());
+    bytes[processes - 1] = fileBytes(out);
+    const nlohmann::json bricks = nlohmann::json::parse(readFile(report))["bricks"];
+    EXPECT_EQ(bricks["processes"], processes);
+    EXPECT_EQ(bricks["per_process_seconds"].size(), std::size_t(processes));
+    EXPECT_EQ(bricks["bytes_exchanged"] > 0, processes > 1);
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_TRUE(bytes[0] == bytes[1]);
+}
+
 TEST(MpiBricks, AKilledProcessLeavesNothing) {
   const fs::path dir = emptyFolder("killed");
   const fs::path out = dir / "killed_run.vdb";
@@ -88,6 +111,17 @@ TEST(MpiBricks, AKilledProcessLeavesNothing) {
                                                        shellWord(dir / "r.json") + " --preview " +
                                                        shellWord(dir / "preview"));
   EXPECT_NE(run.exitCode, 0);
+  EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
+
+  const fs::path placed = dir / "killed_placement.vdb";
+  const std::string placing = shellWord(fs::path(SOLIDTEX_TESTS_DIR) / "killOneRank.sh") + " " +
+                              shellWord(placed.filename()) + " & " + std::string(SOLIDTEX_MPIRUN) +
+                              " --allow-run-as-root --oversubscribe --quiet -np 2 " +
+                              shellWord(SOLIDTEX_EXECUTABLE);
+  const Outcome killed = testing::runCommand(placing, "particles " + kGravel + " -o " + shellWord(placed) +
+                                                          " --size 128 --bricks 32 --quiet --report " +
+                                                          shellWord(dir / "p.json"));
+  EXPECT_NE(killed.exitCode, 0);
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
 }
 
@@ -103,7 +137,15 @@ TEST(MpiBricks, BadInputIsOneLineFromOneProcess) {
     EXPECT_EQ(run.exitCode, 2) << arguments;
     EXPECT_EQ(run.errLines.size(), 1u) << arguments;
   }
-  // Found by rank 0 alone, after MPI started: the other process must not wait for it.
+  // Found by every process after the photo's analysis (bricks too narrow for its particles), and
+  // by rank 0 alone (a missing folder): either way one line, and no process waits for another.
+  for (const std::string& arguments :
+       {"particles " + photo + out + " --size 64 --bricks 8",
+        "particles " + photo + " -o " + shellWord(dir / "missing" / "a.vdb") + " --size 64 --bricks 32"}) {
+    const Outcome run = runUnderMpirun(2, arguments);
+    EXPECT_EQ(run.exitCode, 1) << arguments;
+    EXPECT_EQ(run.errLines.size(), 1u) << arguments;
+  }
   const Outcome missing =
       runUnderMpirun(2, "synthesize " + kStent + " -o " + shellWord(dir / "missing" / "a.vdb") + kOptions);
   EXPECT_EQ(missing.exitCode, 1);
