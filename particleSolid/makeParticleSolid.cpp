@@ -191,8 +191,6 @@ void checkParticleSolidOptions(const ParticleSolidOptions& options) {
     throw OptionError("--shapes must be in [1, 4096]");
   if (options.brickEdge < 0)
     throw OptionError("--bricks must be positive, got " + std::to_string(options.brickEdge));
-  if (options.brickEdge > 0 && options.boundary == Boundary::Periodic)
-    throw OptionError("--bricks does not wrap a periodic volume yet: use --boundary open or walls");
 }
 
 double particleSolidPeakBytes(const Dims& dims, const Dims& placed, PlacerKind placer, bool denseColor) {

@@ -46,7 +46,8 @@ struct BrickPlan {
   int colour = 0;
 };
 
-std::vector<BrickPlan> planBricks(const Dims& placed, const Box& counted, int edge, int halo) {
+// In a periodic volume windows run past its faces (their voxels wrap), and spots stay in the brick.
+std::vector<BrickPlan> planBricks(const Dims& placed, const Box& counted, int edge, int halo, bool periodic) {
   std::vector<BrickPlan> plans;
   for (const Box& local : bricksOf(counted.dims(), edge)) {
     BrickPlan plan;
@@ -60,6 +61,11 @@ std::vector<BrickPlan> planBricks(const Dims& placed, const Box& counted, int ed
     int* windowLo[3] = {&plan.window.lo.x, &plan.window.lo.y, &plan.window.lo.z};
     int* windowHi[3] = {&plan.window.hi.x, &plan.window.hi.y, &plan.window.hi.z};
     for (int a = 0; a < 3; ++a) {
+      if (periodic) {
+        *windowLo[a] = *spotLo[a] - halo;
+        *windowHi[a] = *spotHi[a] + halo;
+        continue;
+      }
       if (*spotLo[a] == los[a]) *spotLo[a] = 0;
       if (*spotHi[a] == his[a]) *spotHi[a] = ends[a];
       *windowLo[a] = std::max(0, *spotLo[a] - halo);
@@ -82,7 +88,7 @@ std::vector<PlacementObstacle> obstaclesIn(const Box& window, const Dims& placed
   for (int k = window.lo.z; k < window.hi.z; ++k)
     for (int j = window.lo.y; j < window.hi.y; ++j)
       for (int i = window.lo.x; i < window.hi.x; ++i)
-        if (const std::int32_t id = owner[placed.index(i, j, k)])
+        if (const std::int32_t id = owner[placed.index(placed.wrap({i, j, k}))])
           byId[id].voxels.push_back({i - window.lo.x, j - window.lo.y, k - window.lo.z});
   std::vector<PlacementObstacle> obstacles;
   obstacles.reserve(byId.size());
@@ -139,7 +145,9 @@ BrickOutcome placeBrick(const ExemplarStats& stats, const ParticleFactory& facto
   brick.dims = plan.window.dims();
   // A brick fills its share: its own particles' voxels inside the counted box, wherever they are,
   // make its fraction, so that a neighbour's particles reaching into it do not fill it twice.
-  brick.counted = shifted(intersection(counted, plan.window), toWindow);
+  brick.counted = options.placement.periodic ? Box::of(brick.dims)
+                                             : shifted(intersection(counted, plan.window), toWindow);
+  brick.periodic = false;  // the window is a box of the torus, walled
   brick.ownVoxels = plan.brick.dims().count();
   brick.quotaDither = quotaDitherOf(index);
   brick.spots = shifted(plan.spots, toWindow);
@@ -287,8 +295,15 @@ std::vector<BrickOutcome> unpackOutcomes(const std::string& bytes, std::string& 
 
 void checkBrickedOptions(const BrickedPlacementOptions& options, int halo) {
   const PlacementOptions& p = options.placement;
-  if (p.periodic)
-    throw InputError("particles are not placed in bricks in a periodic volume: use --boundary open or walls");
+  if (p.periodic) {
+    const int sides[3] = {p.dims.x, p.dims.y, p.dims.z};
+    for (const int side : sides)
+      if (side % options.brickEdge != 0 || (side / options.brickEdge) % 2 != 0)
+        throw InputError(
+            "in a periodic volume bricks must cut every side into an even number, as their colours "
+            "alternate around it: bricks of " +
+            std::to_string(options.brickEdge) + " do not cut " + std::to_string(side));
+  }
   if (p.maxParticles > 0)
     throw std::invalid_argument("placeInBricks: a particle limit has no meaning per brick");
   if (!p.obstacles.empty() || p.spots || p.idsEverywhere)
@@ -390,7 +405,8 @@ BrickedPlacementResult placeInBricks(const ExemplarStats& stats, const ParticleF
   checkBrickedOptions(options, out.halo);
   const Dims placed = options.placement.dims;
   const Box counted = options.placement.counted.value_or(Box::of(placed));
-  const std::vector<BrickPlan> plans = planBricks(placed, counted, options.brickEdge, out.halo);
+  const std::vector<BrickPlan> plans =
+      planBricks(placed, counted, options.brickEdge, out.halo, options.placement.periodic);
 
   PlacementResult& result = out.placement;
   std::vector<std::int32_t> owner(placed.count(), 0);  // particle ids over the whole placed volume
@@ -439,8 +455,9 @@ BrickedPlacementResult placeInBricks(const ExemplarStats& stats, const ParticleF
         for (const auto& [index, id] : outcome.taken) {
           const Voxel w = window.voxel(index);
           const Voxel v{w.x + plan.window.lo.x, w.y + plan.window.lo.y, w.z + plan.window.lo.z};
-          owner[placed.index(v)] = id + offset;
-          countedVoxels += counted.contains(v) ? 1 : 0;
+          const Voxel inside = placed.wrap(v);
+          owner[placed.index(inside)] = id + offset;
+          countedVoxels += counted.contains(inside) ? 1 : 0;
         }
         for (std::size_t b = 0; b < result.placedPerBin.size(); ++b) {
           result.placedPerBin[b] += brick.placedPerBin[b];
@@ -473,6 +490,7 @@ BrickedPlacementResult placeInBricks(const ExemplarStats& stats, const ParticleF
     out.bricks[b].volumeFraction = double(taken) / double(box.dims().count());
   }
   result.dims = placed;
+  result.periodic = options.placement.periodic;
   result.counted = counted;
   if (counted == Box::of(placed)) {
     result.ids = std::move(owner);

@@ -23,7 +23,8 @@ struct BrickTeam {
 
 struct BrickedPlacementOptions {
   /// The whole volume's placement: its dims, counted box (the bricks tile it), seed and sizes. Its
-  /// progress is called after each brick. Not periodic, and no particle limit.
+  /// progress is called after each brick. No particle limit. Periodic: each side an even number of
+  /// bricks.
   PlacementOptions placement;
   PlacerKind placer = PlacerKind::Edt;
   float radiusCap = 1;  ///< the fields' cap: how far a particle reaches from its spot
@@ -61,7 +62,8 @@ int brickHalo(float radiusCap);
 /// its own (bricks on the counted box's faces also from the margin beyond), in a window of a halo
 /// around it, with the particles of bricks done before as obstacles; its particles may reach into
 /// the halo. Every brick has its own seed, so the result is the same at any thread count.
-/// Throws InputError when the bricks are narrower than two halos.
+/// In a periodic volume, windows and particles wrap around its faces. Throws InputError when the
+/// bricks are narrower than two halos, or do not cut a periodic volume's sides into even numbers.
 BrickedPlacementResult placeInBricks(const ExemplarStats& stats, const ParticleFactory& factory,
                                      const BrickedPlacementOptions& options);
 
