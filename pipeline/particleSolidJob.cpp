@@ -79,11 +79,20 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
   }
   if (const std::string first = world.firstOf(failure); !first.empty()) throwFailureText(first);
 
-  const cv::Mat photo = loadPhoto(job.photo);
-  const ExemplarStats& stats = builder->analyze(photo, job.photo);
-  if (root) warnOfDroppedRegions(stats, &line);
-  builder->makeParticles();
-  builder->place();
+  cv::Mat photo;
+  try {
+    photo = loadPhoto(job.photo);
+    const ExemplarStats& stats = builder->analyze(photo, job.photo);
+    if (root) warnOfDroppedRegions(stats, &line);
+    builder->makeParticles();
+    builder->place();
+  } catch (...) {
+    if (world.size() == 1) throw;
+    failure = failureText(std::current_exception());
+  }
+  // The processes meet the same input alike (and a brick's failure reaches every one with its
+  // bytes): they agree here, so that none exits while another still works, which mpirun reports.
+  if (const std::string first = world.firstOf(failure); !first.empty()) throwFailureText(first);
   line.done();
   if (!root) return nlohmann::json::object();  // rank 0 paints and writes the whole placement
   ParticleSolid solid = builder->finish();
