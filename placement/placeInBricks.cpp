@@ -165,7 +165,7 @@ BrickOutcome placeBrick(const ExemplarStats& stats, const ParticleFactory& facto
   return outcome;
 }
 
-// Little-endian-agnostic byte packing of plain values: the processes are one build on one kind of
+// Plain values packed in the machine's own byte order: the processes are one build on one kind of
 // machine.
 class Packer {
 public:
