@@ -11,66 +11,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "common/squaredDistanceTransform.h"
 #include "placement/detail/BucketField.h"
 
 namespace solidtex::placement::detail {
 namespace {
 
 constexpr int kBlock = 8;
-constexpr std::uint32_t kFar = 0x3fffffff;  // no particle voxel on the line
-
-// Lower envelope of the parabolas (q - p)^2 + f[p] of one line's finite samples.
-class LowerEnvelope {
-public:
-  explicit LowerEnvelope(int n) : apex_(std::size_t(n)), from_(std::size_t(n)), value_(std::size_t(n)) {}
-
-  /// Sites f[0], f[stride], ... (n of them) at positions origin, origin+1, ...; kFar samples are none.
-  void build(const std::uint32_t* f, int n, std::ptrdiff_t stride, int origin) {
-    top_ = -1;
-    cursor_ = 0;
-    for (int i = 0; i < n; ++i) {
-      const std::uint32_t fi = f[i * stride];
-      if (fi >= kFar) continue;
-      const int q = origin + i;
-      const double lifted = double(fi) + double(q) * q;
-      double from = -std::numeric_limits<double>::infinity();
-      while (top_ >= 0) {
-        const int p = apex_[std::size_t(top_)];
-        from = (lifted - (double(value_[std::size_t(top_)]) + double(p) * p)) / (2.0 * (q - p));
-        if (from > from_[std::size_t(top_)]) break;
-        --top_;
-        from = -std::numeric_limits<double>::infinity();
-      }
-      ++top_;
-      apex_[std::size_t(top_)] = q;
-      from_[std::size_t(top_)] = from;
-      value_[std::size_t(top_)] = fi;
-    }
-  }
-
-  bool empty() const { return top_ < 0; }
-
-  /// The envelope at q; successive calls must not decrease q.
-  std::uint32_t at(int q) {
-    while (cursor_ < top_ && from_[std::size_t(cursor_) + 1] < q) ++cursor_;
-    const std::int64_t d = q - apex_[std::size_t(cursor_)];
-    return std::uint32_t(d * d + value_[std::size_t(cursor_)]);
-  }
-
-private:
-  std::vector<int> apex_;
-  std::vector<double> from_;
-  std::vector<std::uint32_t> value_;
-  int top_ = -1, cursor_ = 0;
-};
-
-// In place: f[i] = min_j f[j] + (i-j)^2 over the samples f[0], f[stride], ... of one line.
-void transformLine(std::uint32_t* f, int n, std::ptrdiff_t stride, LowerEnvelope& envelope) {
-  envelope.build(f, n, stride, 0);
-  if (envelope.empty()) return;
-  for (int q = 0; q < n; ++q) f[q * stride] = envelope.at(q);
-}
-
 double squared(double v) { return v * v; }
 
 // Squared gap between the voxels of the half-open intervals [a0,a1) and [b0,b1).
@@ -206,7 +153,7 @@ private:
   // voxels within each z plane (the EDT's passes along x and y).
   void transformSlab(const std::vector<Voxel>& voxels, const Box& p) {
     slabDims_ = {sub_.hi.x - sub_.lo.x, sub_.hi.y - sub_.lo.y, p.hi.z - p.lo.z};
-    slab_.assign(slabDims_.count(), kFar);
+    slab_.assign(slabDims_.count(), kNoSite);
     for (const Voxel& v : voxels) slab_[slabDims_.index(v.x - sub_.lo.x, v.y - sub_.lo.y, v.z - p.lo.z)] = 0;
     const int sx = slabDims_.x, sy = slabDims_.y, py = p.hi.y - p.lo.y, y0 = p.lo.y - sub_.lo.y;
     const std::ptrdiff_t plane = std::ptrdiff_t(sx) * sy;

@@ -8,7 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools libtiff-dev
   libtbb-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-  libnanoflann-dev libfaiss-dev libblas-dev liblapack-dev
+  libnanoflann-dev libfaiss-dev libfftw3-dev libblas-dev liblapack-dev
   libgtest-dev valgrind
   libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3-numpy python3-scipy python3-skimage python3-pil
