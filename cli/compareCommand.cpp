@@ -27,11 +27,28 @@ void printContinuous(const nlohmann::json& q) {
   }
 }
 
+void printMaterials(const nlohmann::json& phases) {
+  for (const auto& [name, phase] : phases.items()) {
+    std::cout << name << ", sections vs photo:";
+    const nlohmann::json& d = phase["sections_vs_photo"];
+    if (d.contains("s2_rms")) std::cout << " S2 rms " << d["s2_rms"].get<double>();
+    if (d.contains("chord_mean_ratio")) std::cout << ", mean chord x" << d["chord_mean_ratio"].get<double>();
+    if (d.contains("local_thickness_mean_ratio"))
+      std::cout << ", local thickness x" << d["local_thickness_mean_ratio"].get<double>();
+    if (phase["solid"].contains("tortuosity"))
+      for (const auto& [axis, t] : phase["solid"]["tortuosity"].items())
+        std::cout << ", tortuosity " << axis << ' '
+                  << (t.contains("factor") ? std::to_string(t["factor"].get<double>()) : "none (no path)");
+    std::cout << '\n';
+  }
+}
+
 }  // namespace
 
 Action addCompareCommand(CLI::App& app) {
   auto job = std::make_shared<CompareJob>();
   auto mode = std::make_shared<std::string>("auto");
+  auto measures = std::make_shared<std::string>();
   CLI::App* command = app.add_subcommand(
       "compare",
       "Compare a solid with its photo: a particle solid's statistics or a continuous solid's slices");
@@ -68,9 +85,23 @@ Action addCompareCommand(CLI::App& app) {
                    "Particles: also compare the planes within 4 voxels of the faces of bricks of this edge "
                    "with the rest (seams of `particles --bricks`; on any solid, for a reference)")
       ->check(CLI::PositiveNumber);
+  command->add_option("--measures", *measures,
+                      "Particles: materials descriptors of photo, sections and solid, a list of s2, lineal, "
+                      "chord, psd, minkowski, tortuosity, or all, or none (default: all but tortuosity)");
+  command
+      ->add_option("--max-distance", job->materials.maxDistance,
+                   "Longest separation of the correlation curves, voxels (default: a quarter of the photo's "
+                   "shorter side at the solid's scale)")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--measure-planes", job->materials.planesPerAxis,
+                   "Axis sections per axis that the materials descriptors average")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   addSegmentationOptions(*command, job->segmentation);
-  return [job, mode] {
+  return [job, mode, measures] {
     job->mode = parseCompareMode(*mode);
+    if (!measures->empty()) job->measures = parseMeasureSelection(*measures);
     job->quality.seed = job->sections.seed;
     const auto r = runCompare(*job);
     if (r["mode"] == "continuous") {
@@ -81,6 +112,7 @@ Action addCompareCommand(CLI::App& app) {
               << r["volume_fraction"].get<double>() << ", sections "
               << r["section_area_fraction"].get<double>() << "; section areas vs photo: KS "
               << r["ks"].get<double>() << ", W1/mean " << r["wasserstein1_over_mean"].get<double>() << '\n';
+    if (r.contains("materials")) printMaterials(r["materials"]["phases"]);
     if (r.contains("truth"))
       std::cout << "particle volumes vs truth: KS " << r["truth"]["volume_ks"].get<double>() << ", W1/mean "
                 << r["truth"]["volume_wasserstein1_over_mean"].get<double>() << '\n';

@@ -156,6 +156,13 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
       {"particle_diameter", diameter}};
   if (job.truth)
     report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
+  MaterialsOptions materials = job.materials;
+  if (job.measures) materials.measures = *job.measures;
+  if (materials.measures.any()) {
+    const auto boundary = volume.metadata.find("boundary");
+    materials.periodic = boundary != volume.metadata.end() && boundary->second == "periodic";
+    report["materials"] = materialsReport(labels, volume.dims, volume.particleId, materials);
+  }
   if (job.brickEdge > 0)
     report["brick_seams"] =
         brickSeamsReport(volume.particleId, volume.dims, job.brickEdge, sectionOptions.windowSide);
@@ -192,6 +199,8 @@ nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
   if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
+  if (job.measures && job.measures->any())
+    throw OptionError("--measures needs the phases of a particle solid; a continuous solid has none yet");
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/SolidVolume.h"
+#include "pipeline/materialsReport.h"
 #include "segmentation/analyzeExemplar.h"
 #include "validation/continuousQuality.h"
 #include "validation/sectionStatistics.h"
@@ -36,6 +37,10 @@ struct CompareJob {
   std::optional<std::string> reference;  ///< continuous: a second photo of the material, the reference level
   ContinuousQualityOptions quality;      ///< continuous: how slices are measured
   int brickEdge = 0;  ///< particles: also measure seams along the faces of bricks of this edge; 0: none
+  /// Particles: the materials descriptors of photo, sections and solid (materials.measures is
+  /// replaced by `measures` when given).
+  MaterialsOptions materials;
+  std::optional<MeasureSelection> measures;  ///< none given: all but tortuosity
 };
 
 /// The report of brickSeams for a particle id volume: the planes within 4 voxels of the inner faces

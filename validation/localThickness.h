@@ -8,7 +8,12 @@ namespace solidtex {
 /// How localThickness samples sphere radii.
 struct LocalThicknessOptions {
   int sizes = 25;  ///< radii, log-spaced from the largest inscribed sphere's down to 1 voxel (PoreSpy's default)
+  double largest = 0;  ///< > 0: log-space the radii from this one instead, so that fields compare
 };
+
+/// The radius of the largest sphere (disc) inside the phase: the greatest distance from a voxel of
+/// it to the nearest voxel outside; 1 when the phase has no voxel outside.
+double largestInscribedRadius(const PhaseField& phase);
 
 /// The local thickness of a phase (Hildebrand & Rüegsegger): for every voxel, the radius of the
 /// largest sphere inside the phase that covers it, among the radii sampled.
