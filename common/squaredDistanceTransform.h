@@ -67,4 +67,7 @@ inline void transformLine(std::uint32_t* f, int n, std::ptrdiff_t stride, LowerE
 /// sites, kNoSite everywhere when there is none. Separable (three passes of transformLine, TBB).
 std::vector<std::uint32_t> squaredDistanceToSites(const Dims& dims, const std::vector<std::uint8_t>& isSite);
 
+/// The same into `out` (resized to dims.count()), which a caller that transforms many fields reuses.
+void squaredDistanceToSites(const Dims& dims, const std::vector<std::uint8_t>& isSite, std::vector<std::uint32_t>& out);
+
 }  // namespace solidtex

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include "common/Error.h"
 #include "common/squaredDistanceTransform.h"
 
@@ -39,17 +43,27 @@ LocalThickness localThickness(const PhaseField& phase, const LocalThicknessOptio
   std::size_t phaseVoxels = 0, covered = 0;
   for (std::uint8_t in : phase.inside) phaseVoxels += in;
   if (phaseVoxels == 0) return out;
+  std::vector<std::uint8_t> centre(n);
+  std::vector<std::uint32_t> reach;
   for (int s = 0; s < options.sizes; ++s) {
     const double r = options.sizes == 1 ? 1.0 : std::pow(largest, 1.0 - double(s) / (options.sizes - 1));
     if (!out.sizes.empty() && r >= out.sizes.back()) continue;
-    std::vector<std::uint8_t> centre(n);
-    for (std::size_t i = 0; i < n; ++i) centre[i] = phase.inside[i] && double(depth[i]) >= r * r;
-    const std::vector<std::uint32_t> reach = squaredDistanceToSites(phase.dims, centre);
-    for (std::size_t i = 0; i < n; ++i)
-      if (phase.inside[i] && out.radius[i] == 0 && double(reach[i]) < r * r) {
-        out.radius[i] = float(r);
-        ++covered;
-      }
+    const double r2 = r * r;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& b) {
+      for (std::size_t i = b.begin(); i != b.end(); ++i) centre[i] = phase.inside[i] && double(depth[i]) >= r2;
+    });
+    squaredDistanceToSites(phase.dims, centre, reach);
+    covered += tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n), std::size_t(0),
+        [&](const tbb::blocked_range<std::size_t>& b, std::size_t newly) {
+          for (std::size_t i = b.begin(); i != b.end(); ++i)
+            if (phase.inside[i] && out.radius[i] == 0 && double(reach[i]) < r2) {
+              out.radius[i] = float(r);
+              ++newly;
+            }
+          return newly;
+        },
+        std::plus<>());
     out.sizes.push_back(r);
     out.cumulative.push_back(double(covered) / double(phaseVoxels));
   }

@@ -65,42 +65,74 @@ bool voxelWrapped(const PhaseField& phase, int i, int j, int k) {
   return phase.inside[phase.dims.index(phase.dims.wrap({i, j, k}))];
 }
 
+// Where a lattice position lies along an axis: on the first layer, inside, or on the last.
+int layerClass(int p, int n) { return p == 0 ? 0 : p == n - 1 ? 2 : 1; }
+
+// The closed complex's cells counted once for every window the densities use: per span (indexed
+// x + 2y + 4z) and per layer class of the position along each axis, in one pass over the field.
+struct CellCounts {
+  std::array<std::array<double, 27>, 8> bySpanAndClass{};
+};
+
+CellCounts countCells(const PhaseField& phase, bool periodic) {
+  const Axes n = extentOf(phase);
+  const int spans = phase.isImage() ? 4 : 8;
+  const auto at = [&](int i, int j, int k) {
+    if (periodic) return voxelWrapped(phase, i, j, k);
+    return phase.dims.contains(i, j, k) && phase.inside[phase.dims.index(i, j, k)] != 0;
+  };
+  using Counts = std::array<std::array<double, 27>, 8>;
+  const Counts counts = tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, n[2]), Counts{},
+      [&](const tbb::blocked_range<int>& ks, Counts acc) {
+        for (int k = ks.begin(); k != ks.end(); ++k)
+          for (int j = 0; j < n[1]; ++j)
+            for (int i = 0; i < n[0]; ++i) {
+              std::array<bool, 8> voxel{};  // p - d for d in {0,1}^3, indexed dx + 2dy + 4dz
+              for (int d = 0; d < spans; ++d) voxel[std::size_t(d)] = at(i - (d & 1), j - ((d >> 1) & 1), k - (d >> 2));
+              const int cls = layerClass(i, n[0]) + 3 * layerClass(j, n[1]) + 9 * layerClass(k, n[2]);
+              for (int span = 0; span < spans; ++span) {
+                const bool inside = periodic || ((!(span & 1) || i >= 1) && (!(span & 2) || j >= 1) && (!(span & 4) || k >= 1));
+                if (!inside) continue;
+                bool present = false;
+                for (int d = 0; d < spans && !present; ++d) present = (d & ~span) == 0 && voxel[std::size_t(d)];
+                if (present) acc[std::size_t(span)][std::size_t(cls)] += 1;
+              }
+            }
+        return acc;
+      },
+      [](Counts a, const Counts& b) {
+        for (std::size_t s = 0; s < 8; ++s)
+          for (std::size_t c = 0; c < 27; ++c) a[s][c] += b[s][c];
+        return a;
+      });
+  return {counts};
+}
+
 // The density per voxel of the closed complex's cells of `span`, counted in the 2x2(x2) windows of
 // voxels along `window` (the other axes are sampled plane by plane): a cell counts by the share of
 // the windows that hold it which lie in the field, so that every window sees all of its cells and
 // an object inside the field counts exactly. Periodic: the windows wrap around.
-double cellDensity(const PhaseField& phase, const Span& span, const Axes& window, bool periodic) {
+double cellDensity(const PhaseField& phase, const CellCounts& counts, const Span& span, const Axes& window,
+                   bool periodic) {
   const Axes n = extentOf(phase);
   double windows = 1;
   for (int a = 0; a < 3; ++a) windows *= periodic || !window[a] ? n[a] : n[a] - 1;
   if (windows <= 0) return 0;
-  const auto weightOf = [&](int a, int p) {
+  const auto weightOf = [&](int a, int cls) {
     if (periodic || !window[a] || span[a]) return 1.0;
+    const int p = cls == 0 ? 0 : cls == 2 ? n[a] - 1 : 1;
     return 0.5 * ((p >= 1) + (p <= n[a] - 2));
   };
-  const double cells = tbb::parallel_reduce(
-      tbb::blocked_range<int>(periodic ? 0 : span[2], n[2]), 0.0,
-      [&](const tbb::blocked_range<int>& ks, double acc) {
-        for (int k = ks.begin(); k != ks.end(); ++k)
-          for (int j = periodic ? 0 : span[1]; j < n[1]; ++j)
-            for (int i = periodic ? 0 : span[0]; i < n[0]; ++i) {
-              bool present = false;
-              for (int dz = 0; dz <= span[2] && !present; ++dz)
-                for (int dy = 0; dy <= span[1] && !present; ++dy)
-                  for (int dx = 0; dx <= span[0] && !present; ++dx)
-                    present = periodic ? voxelWrapped(phase, i - dx, j - dy, k - dz)
-                                       : phase.inside[phase.dims.index(i - dx, j - dy, k - dz)] != 0;
-              if (present) acc += weightOf(0, i) * weightOf(1, j) * weightOf(2, k);
-            }
-        return acc;
-      },
-      std::plus<>());
+  double cells = 0;
+  const auto& bySpan = counts.bySpanAndClass[std::size_t(span[0] + 2 * span[1] + 4 * span[2])];
+  for (int c = 0; c < 27; ++c) cells += bySpan[std::size_t(c)] * weightOf(0, c % 3) * weightOf(1, (c / 3) % 3) * weightOf(2, c / 9);
   return cells / windows;
 }
 
 // The Euler characteristic per voxel (per pixel of the planes across `normal`, or of the image
 // when normal < 0) of the closed complex: the alternating sum of its cells' densities.
-double eulerDensity(const PhaseField& phase, int normal, bool periodic) {
+double eulerDensity(const PhaseField& phase, const CellCounts& counts, int normal, bool periodic) {
   Axes window{1, 1, phase.isImage() ? 0 : 1};
   if (normal >= 0) window[std::size_t(normal)] = 0;
   const int dimension = window[0] + window[1] + window[2];
@@ -108,7 +140,7 @@ double eulerDensity(const PhaseField& phase, int normal, bool periodic) {
   for (const Span& span : spansOf(phase)) {
     if ((span[0] && !window[0]) || (span[1] && !window[1]) || (span[2] && !window[2])) continue;
     const int cellDimension = dimension - span[0] - span[1] - span[2];
-    chi += (cellDimension % 2 == 0 ? 1 : -1) * cellDensity(phase, span, window, periodic);
+    chi += (cellDimension % 2 == 0 ? 1 : -1) * cellDensity(phase, counts, span, window, periodic);
   }
   return chi;
 }
@@ -196,9 +228,11 @@ MinkowskiDensities minkowskiDensities(const PhaseField& phase, bool periodic) {
   for (std::size_t s = 0; s < directions.steps.size(); ++s)
     meanCrossings += directions.weights[s] * crossingsPerLength(phase, directions.steps[s], periodic);
   out.boundary = phase.isImage() ? std::numbers::pi / 2 * meanCrossings : 2 * meanCrossings;
-  out.euler = eulerDensity(phase, -1, periodic);
+  const CellCounts cells = countCells(phase, periodic);
+  out.euler = eulerDensity(phase, cells, -1, periodic);
   if (phase.isImage()) return out;
-  const double sections = eulerDensity(phase, 0, periodic) + eulerDensity(phase, 1, periodic) + eulerDensity(phase, 2, periodic);
+  const double sections = eulerDensity(phase, cells, 0, periodic) + eulerDensity(phase, cells, 1, periodic) +
+                          eulerDensity(phase, cells, 2, periodic);
   out.meanCurvature = 2 * std::numbers::pi * sections / 3;
   return out;
 }
