@@ -68,6 +68,7 @@ inline void transformLine(std::uint32_t* f, int n, std::ptrdiff_t stride, LowerE
 std::vector<std::uint32_t> squaredDistanceToSites(const Dims& dims, const std::vector<std::uint8_t>& isSite);
 
 /// The same into `out` (resized to dims.count()), which a caller that transforms many fields reuses.
-void squaredDistanceToSites(const Dims& dims, const std::vector<std::uint8_t>& isSite, std::vector<std::uint32_t>& out);
+void squaredDistanceToSites(const Dims& dims, const std::vector<std::uint8_t>& isSite,
+                            std::vector<std::uint32_t>& out);
 
 }  // namespace solidtex

@@ -13,6 +13,7 @@
 #include "pipeline/comparisonPlot.h"
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
+#include "pipeline/materialsPlot.h"
 #include "validation/arrangement.h"
 #include "validation/brickSeams.h"
 #include "validation/compareSections.h"
@@ -98,6 +99,16 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   return report;
 }
 
+// The comparison plot with the materials descriptors' curves below it, when the report has them.
+cv::Mat withMaterials(const cv::Mat& plot, const nlohmann::json& report) {
+  if (!report.contains("materials")) return plot;
+  const cv::Mat curves = plotMaterials(report["materials"], plot.cols);
+  if (curves.empty()) return plot;
+  cv::Mat both;
+  cv::vconcat(plot, curves, both);
+  return both;
+}
+
 nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
                                 cv::Mat* plot) {
   if (job.reference)
@@ -166,7 +177,7 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
   if (job.brickEdge > 0)
     report["brick_seams"] =
         brickSeamsReport(volume.particleId, volume.dims, job.brickEdge, sectionOptions.windowSide);
-  if (plot) *plot = plotComparison(data, report);
+  if (plot) *plot = withMaterials(plotComparison(data, report), report);
   return report;
 }
 

@@ -19,7 +19,7 @@ namespace {
 using json = nlohmann::json;
 using Curve = std::vector<double>;
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};
-constexpr int kChordBins = 12;
+constexpr int kChordBinWidth = 1, kChordBins = 64;  // the last bin holds the longer chords
 
 // One field's descriptors, or the mean of several (the sections).
 struct Descriptors {
@@ -151,8 +151,6 @@ json axesJson(const std::array<Curve, 3>& axes) {
   return out;
 }
 
-int chordBinWidth(int R) { return std::max(1, R / 8); }
-
 json descriptorsJson(const Descriptors& d, const MeasureSelection& m, int R, bool solid) {
   json out = {{"fraction", d.fraction}};
   if (m.twoPoint) {
@@ -171,18 +169,19 @@ json descriptorsJson(const Descriptors& d, const MeasureSelection& m, int R, boo
       const auto& counts = d.chords[std::size_t(a)];
       if (counts.empty()) continue;
       means[kAxisNames[a]] = meanChord(counts);
-      histograms[kAxisNames[a]] = chordHistogram(counts, chordBinWidth(R), kChordBins);
+      histograms[kAxisNames[a]] = chordHistogram(counts, kChordBinWidth, kChordBins);
       pooled.resize(std::max(pooled.size(), counts.size()), 0);
       for (std::size_t l = 0; l < counts.size(); ++l) pooled[l] += counts[l];
     }
     out["chords"] = {{"mean", meanChord(pooled)},
                      {"axis_mean", means},
-                     {"bin_width", chordBinWidth(R)},
-                     {"histogram", chordHistogram(pooled, chordBinWidth(R), kChordBins)},
+                     {"bin_width", kChordBinWidth},
+                     {"histogram", chordHistogram(pooled, kChordBinWidth, kChordBins)},
                      {"axis_histogram", histograms}};
   }
   if (m.sizes)
-    out["local_thickness"] = {{"radii", d.radii}, {"cumulative", d.cumulative}, {"mean_radius", d.meanRadius}};
+    out["local_thickness"] = {
+        {"radii", d.radii}, {"cumulative", d.cumulative}, {"mean_radius", d.meanRadius}};
   if (m.minkowski) {
     const MinkowskiDensities& k = d.minkowski;
     out["minkowski"] = solid ? json{{"volume_fraction", k.fraction},
@@ -200,7 +199,8 @@ double ratio(double a, double b) { return b != 0 ? a / b : 0.0; }
 
 double largestDifference(const Curve& a, const Curve& b) {
   double worst = 0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    worst = std::max(worst, std::abs(a[i] - b[i]));
   return worst;
 }
 
@@ -225,7 +225,8 @@ json distancesJson(const Descriptors& photo, const Descriptors& other, const Mea
   if (m.linealPath) out["lineal_path_rms"] = curveDistance(photo.lineal, other.lineal);
   if (m.chords) {
     const auto a = pooledChords(photo), b = pooledChords(other);
-    const Curve ha = chordHistogram(a, chordBinWidth(R), kChordBins), hb = chordHistogram(b, chordBinWidth(R), kChordBins);
+    const Curve ha = chordHistogram(a, kChordBinWidth, kChordBins),
+                hb = chordHistogram(b, kChordBinWidth, kChordBins);
     double l1 = 0;
     for (std::size_t i = 0; i < ha.size(); ++i) l1 += std::abs(ha[i] - hb[i]);
     out["chord_mean_ratio"] = ratio(meanChord(b), meanChord(a));
@@ -279,15 +280,16 @@ FieldToDescribe phaseOfLabelImage(const cv::Mat& labels, bool particles) {
 json phaseReport(const FieldToDescribe& photo, const FieldToDescribe& solid, const MaterialsOptions& options,
                  int R) {
   const MeasureSelection& m = options.measures;
-  const double largest = m.sizes ? std::max(largestInscribedRadius(photo.phase), largestInscribedRadius(solid.phase)) : 0;
+  const double largest =
+      m.sizes ? std::max(largestInscribedRadius(photo.phase), largestInscribedRadius(solid.phase)) : 0;
   const Descriptors ofPhoto = describe(photo, m, R, largest, false);
   std::vector<Descriptors> planes;
   std::vector<int> normals;
   const std::array<int, 3> n{solid.phase.dims.x, solid.phase.dims.y, solid.phase.dims.z};
   for (int a = 0; a < 3; ++a)
     for (int t = 1; t <= options.planesPerAxis; ++t) {
-      planes.push_back(describe(sectionOf(solid, a, t * n[std::size_t(a)] / (options.planesPerAxis + 1)), m, R,
-                                largest, false));
+      planes.push_back(describe(sectionOf(solid, a, t * n[std::size_t(a)] / (options.planesPerAxis + 1)), m,
+                                R, largest, false));
       normals.push_back(a);
     }
   const Descriptors ofSections = meanOf(planes, normals);
@@ -310,12 +312,18 @@ MeasureSelection parseMeasureSelection(const std::string& list) {
   std::stringstream in(list);
   std::string name;
   while (std::getline(in, name, ',')) {
-    if (name == "s2") none.twoPoint = true;
-    else if (name == "lineal") none.linealPath = true;
-    else if (name == "chord") none.chords = true;
-    else if (name == "psd") none.sizes = true;
-    else if (name == "minkowski") none.minkowski = true;
-    else if (name == "tortuosity") none.tortuosity = true;
+    if (name == "s2")
+      none.twoPoint = true;
+    else if (name == "lineal")
+      none.linealPath = true;
+    else if (name == "chord")
+      none.chords = true;
+    else if (name == "psd")
+      none.sizes = true;
+    else if (name == "minkowski")
+      none.minkowski = true;
+    else if (name == "tortuosity")
+      none.tortuosity = true;
     else
       throw OptionError("unknown measure '" + name +
                         "' (expected s2, lineal, chord, psd, minkowski, tortuosity, all or none)");
@@ -331,9 +339,13 @@ json materialsReport(const cv::Mat& photoLabels, const Dims& dims, const std::ve
   for (bool particles : {true, false}) {
     FieldToDescribe solid{phaseOfIds(dims, ids, particles), {}};
     if (particles) solid.labels = ids;
-    phases[particles ? "particles" : "matrix"] = phaseReport(phaseOfLabelImage(photoLabels, particles), solid, options, R);
+    phases[particles ? "particles" : "matrix"] =
+        phaseReport(phaseOfLabelImage(photoLabels, particles), solid, options, R);
   }
-  return {{"max_distance", R}, {"planes_per_axis", options.planesPerAxis}, {"periodic", options.periodic}, {"phases", phases}};
+  return {{"max_distance", R},
+          {"planes_per_axis", options.planesPerAxis},
+          {"periodic", options.periodic},
+          {"phases", phases}};
 }
 
 }  // namespace solidtex

@@ -39,7 +39,7 @@ struct MaterialsOptions {
 /// The descriptors of the particle phase and the matrix of a photo's label image (CV_32S at the
 /// solid's scale, 0 = matrix), of the solid's axis sections and of the solid (an id volume) in 3D,
 /// with the distances between the photo's curves and the sections' and the solid's.
-nlohmann::json materialsReport(const cv::Mat& photoLabels, const Dims& dims, const std::vector<std::int32_t>& ids,
-                               const MaterialsOptions& options);
+nlohmann::json materialsReport(const cv::Mat& photoLabels, const Dims& dims,
+                               const std::vector<std::int32_t>& ids, const MaterialsOptions& options);
 
 }  // namespace solidtex

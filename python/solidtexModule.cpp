@@ -31,7 +31,9 @@
 #include "pipeline/jobOutputs.h"
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
+#include "python/binding.h"
 #include "python/keywords.h"
+#include "python/materialsBindings.h"
 #include "segmentation/analyzeExemplar.h"
 #include "segmentation/drawLabels.h"
 #include "segmentation/reportJson.h"
@@ -44,86 +46,6 @@ namespace py = pybind11;
 
 namespace solidtex::python {
 namespace {
-
-/// solidtex.Error: input the library cannot use (a photo it cannot read, an unwritable output, too
-/// little memory); options out of range raise ValueError. Never destroyed: the interpreter may be
-/// gone by then.
-py::object* errorType = nullptr;
-
-/// A call owns process-wide state while it runs (one OutputFiles, the thread limit, stderr's
-/// descriptor while libraries print): Python threads take turns.
-std::mutex commandMutex;
-
-/// Raised from a progress report when Python has a signal to handle (Ctrl-C): the work unwinds and
-/// the pending KeyboardInterrupt is raised in its place.
-struct Interrupted {};
-
-/// Python's signals (Ctrl-C), looked at between units of the library's work.
-void checkSignals() {
-  const py::gil_scoped_acquire gil;
-  if (PyErr_CheckSignals() != 0) throw Interrupted{};
-}
-
-/// A library message names options as the command line spells them (--min-area); Python's
-/// keywords are min_area.
-std::string asKeywords(std::string message) {
-  static const std::regex flag("--([a-z]+(-[a-z]+)*)");
-  std::string result;
-  std::sregex_iterator it(message.begin(), message.end(), flag), end;
-  std::size_t from = 0;
-  for (; it != end; ++it) {
-    std::string name = (*it)[1].str();
-    std::replace(name.begin(), name.end(), '-', '_');
-    result += message.substr(from, std::size_t(it->position()) - from) + name;
-    from = std::size_t(it->position() + it->length());
-  }
-  return result + message.substr(from);
-}
-
-/// Runs `work` with the GIL released, one library call at a time (OutputFiles and the thread limit
-/// are process-wide), and raises what it threw as Python does: ValueError for options out of
-/// range, solidtex.Error for input it cannot use, MemoryError, KeyboardInterrupt.
-template <typename Work>
-void runReleased(Work&& work) {
-  std::optional<std::string> usage, failure;
-  bool outOfMemory = false, interrupted = false;
-  {
-    py::gil_scoped_release released;
-    const std::lock_guard<std::mutex> oneAtATime(commandMutex);
-    const InterruptionCheck interruptible(checkSignals);
-    try {
-      work();
-    } catch (const Interrupted&) {
-      interrupted = true;
-    } catch (const OptionError& e) {
-      usage = asKeywords(e.what());
-    } catch (const std::bad_alloc&) {
-      outOfMemory = true;
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-  }
-  if (interrupted) throw py::error_already_set();
-  if (usage) throw py::value_error(*usage);
-  if (outOfMemory) throw std::bad_alloc();
-  if (failure) {
-    PyErr_SetString(errorType->ptr(), failure->c_str());
-    throw py::error_already_set();
-  }
-}
-
-/// Reads keyword values into options: a value the library refuses (an unknown placer) is a
-/// ValueError naming the keyword.
-template <typename Parse>
-void runParsing(Parse&& parse) {
-  try {
-    parse();
-  } catch (const py::builtin_exception&) {
-    throw;
-  } catch (const InputError& e) {
-    throw py::value_error(asKeywords(e.what()));
-  }
-}
 
 /// A photo given as a path (read as the command line reads it) or as a numpy array (H, W), (H, W, 3)
 /// or (H, W, 4), uint8 or float in [0, 1] (sRGB). `name` labels it in reports; `what` names it in errors.
@@ -156,14 +78,6 @@ cv::Mat photoOf(const py::handle& photo, std::string& name, const std::string& w
   return image;
 }
 
-/// A numpy array that owns `values` (moved, not copied), shaped `shape`.
-template <typename T>
-py::array_t<T> ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
-  auto* owned = new std::vector<T>(std::move(values));
-  const py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  return py::array_t<T>(shape, owned->data(), free);
-}
-
 /// Colours as one float array, three values per voxel.
 std::vector<float> interleaved(std::vector<Rgb>&& colors) {
   std::vector<float> rgb(colors.size() * 3);
@@ -171,10 +85,6 @@ std::vector<float> interleaved(std::vector<Rgb>&& colors) {
     for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = colors[i][c];
   colors = {};
   return rgb;
-}
-
-py::object toPython(const nlohmann::json& json) {
-  return py::module_::import("json").attr("loads")(json.dump());
 }
 
 /// The seed keyword: a non-negative int, 1 when not given.
@@ -557,6 +467,10 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   job.sections.obliquePlanes = int(keywords.integer("oblique_planes").value_or(job.sections.obliquePlanes));
   job.sections.seed = job.quality.seed = seedOf(keywords);
   job.truth = keywords.path("truth");
+  if (const auto measures = keywords.text("measures"))
+    runParsing([&] { job.measures = parseMeasureSelection(*measures); });
+  job.materials.maxDistance = int(keywords.integer("max_distance").value_or(0));
+  job.materials.planesPerAxis = int(keywords.integer("measure_planes").value_or(job.materials.planesPerAxis));
   const py::object referenceArgument =
       kwargs.contains("reference") ? py::object(kwargs["reference"]) : py::none();
   keywords.take("reference");
@@ -616,5 +530,7 @@ PYBIND11_MODULE(solidtex, m) {
         "volume a .vdb path, the dict particles() or synthesize() returns, or an array ((Z, Y, X, 3) "
         "colours or (Z, Y, X) particle ids). Keywords: mode (auto, particles, continuous), reference (a "
         "second photo), scale, axis_planes, oblique_planes, seed, truth (a .vdb), mask, invert, split, "
-        "min_area.");
+        "min_area; measures (s2, lineal, chord, psd, minkowski, tortuosity, all, none), max_distance, "
+        "measure_planes.");
+  bindMaterialsDescriptors(m);
 }

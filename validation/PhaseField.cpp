@@ -22,7 +22,8 @@ PhaseField phaseOfLabels(const cv::Mat& labels, bool particles) {
   PhaseField field{{labels.cols, labels.rows, 1}, std::vector<std::uint8_t>(labels.total())};
   std::size_t i = 0;
   for (int y = 0; y < labels.rows; ++y)
-    for (int x = 0; x < labels.cols; ++x) field.inside[i++] = (labels.at<std::int32_t>(y, x) > 0) == particles;
+    for (int x = 0; x < labels.cols; ++x)
+      field.inside[i++] = (labels.at<std::int32_t>(y, x) > 0) == particles;
   return field;
 }
 

@@ -26,7 +26,8 @@ Counts runsAlong(const PhaseField& phase, int a, bool keepCut) {
       tbb::blocked_range<std::size_t>(0, lines), Counts(std::size_t(n[a]) + 1, 0),
       [&](const tbb::blocked_range<std::size_t>& r, Counts acc) {
         for (std::size_t line = r.begin(); line != r.end(); ++line) {
-          const std::size_t start = (line % std::size_t(n[u])) * stride[u] + (line / std::size_t(n[u])) * stride[v];
+          const std::size_t start =
+              (line % std::size_t(n[u])) * stride[u] + (line / std::size_t(n[u])) * stride[v];
           int run = 0;
           bool cut = true;  // the run began at the field's face
           for (int t = 0; t <= n[a]; ++t) {

@@ -18,7 +18,8 @@ std::array<std::vector<double>, 3> linealPath(const PhaseField& phase, int maxDi
     const int R = std::min(maxDistance, n[a] - 1);
     for (int r = 0; r <= R; ++r) {
       double inside = 0;
-      for (std::size_t l = std::size_t(r) + 1; l < counts.size(); ++l) inside += double(counts[l]) * double(l - std::size_t(r));
+      for (std::size_t l = std::size_t(r) + 1; l < counts.size(); ++l)
+        inside += double(counts[l]) * double(l - std::size_t(r));
       out[std::size_t(a)].push_back(inside / (lines * (n[a] - r)));
     }
   }

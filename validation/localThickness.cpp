@@ -48,9 +48,12 @@ LocalThickness localThickness(const PhaseField& phase, const LocalThicknessOptio
   for (int s = 0; s < options.sizes; ++s) {
     const double r = options.sizes == 1 ? 1.0 : std::pow(largest, 1.0 - double(s) / (options.sizes - 1));
     if (!out.sizes.empty() && r >= out.sizes.back()) continue;
-    const double r2 = r * r;
+    // r is a rounded power, often of a whole squared distance (sqrt 2 from 2^0.5): ties go as they
+    // would without rounding, centres at distance r included and voxels at distance r not covered.
+    const double r2 = r * r * (1 - 1e-9);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& b) {
-      for (std::size_t i = b.begin(); i != b.end(); ++i) centre[i] = phase.inside[i] && double(depth[i]) >= r2;
+      for (std::size_t i = b.begin(); i != b.end(); ++i)
+        centre[i] = phase.inside[i] && double(depth[i]) >= r2;
     });
     squaredDistanceToSites(phase.dims, centre, reach);
     covered += tbb::parallel_reduce(

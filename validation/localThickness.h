@@ -7,7 +7,8 @@ namespace solidtex {
 
 /// How localThickness samples sphere radii.
 struct LocalThicknessOptions {
-  int sizes = 25;  ///< radii, log-spaced from the largest inscribed sphere's down to 1 voxel (PoreSpy's default)
+  int sizes =
+      25;  ///< radii, log-spaced from the largest inscribed sphere's down to 1 voxel (PoreSpy's default)
   double largest = 0;  ///< > 0: log-space the radii from this one instead, so that fields compare
 };
 

@@ -23,7 +23,8 @@ bool voxelAt(const PhaseField& phase, int i, int j, int k) {
 
 // How many cells of `span` are in the complex (any touched voxel in the phase when closed, all when
 // open), over the positions from lo to hi (inclusive) per axis.
-std::size_t cellsPresent(const PhaseField& phase, const Span& span, const Axes& lo, const Axes& hi, bool closed) {
+std::size_t cellsPresent(const PhaseField& phase, const Span& span, const Axes& lo, const Axes& hi,
+                         bool closed) {
   if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) return 0;
   return tbb::parallel_reduce(
       tbb::blocked_range<int>(lo[2], hi[2] + 1), std::size_t(0),
@@ -89,13 +90,16 @@ CellCounts countCells(const PhaseField& phase, bool periodic) {
           for (int j = 0; j < n[1]; ++j)
             for (int i = 0; i < n[0]; ++i) {
               std::array<bool, 8> voxel{};  // p - d for d in {0,1}^3, indexed dx + 2dy + 4dz
-              for (int d = 0; d < spans; ++d) voxel[std::size_t(d)] = at(i - (d & 1), j - ((d >> 1) & 1), k - (d >> 2));
+              for (int d = 0; d < spans; ++d)
+                voxel[std::size_t(d)] = at(i - (d & 1), j - ((d >> 1) & 1), k - (d >> 2));
               const int cls = layerClass(i, n[0]) + 3 * layerClass(j, n[1]) + 9 * layerClass(k, n[2]);
               for (int span = 0; span < spans; ++span) {
-                const bool inside = periodic || ((!(span & 1) || i >= 1) && (!(span & 2) || j >= 1) && (!(span & 4) || k >= 1));
+                const bool inside = periodic || ((!(span & 1) || i >= 1) && (!(span & 2) || j >= 1) &&
+                                                 (!(span & 4) || k >= 1));
                 if (!inside) continue;
                 bool present = false;
-                for (int d = 0; d < spans && !present; ++d) present = (d & ~span) == 0 && voxel[std::size_t(d)];
+                for (int d = 0; d < spans && !present; ++d)
+                  present = (d & ~span) == 0 && voxel[std::size_t(d)];
                 if (present) acc[std::size_t(span)][std::size_t(cls)] += 1;
               }
             }
@@ -126,7 +130,8 @@ double cellDensity(const PhaseField& phase, const CellCounts& counts, const Span
   };
   double cells = 0;
   const auto& bySpan = counts.bySpanAndClass[std::size_t(span[0] + 2 * span[1] + 4 * span[2])];
-  for (int c = 0; c < 27; ++c) cells += bySpan[std::size_t(c)] * weightOf(0, c % 3) * weightOf(1, (c / 3) % 3) * weightOf(2, c / 9);
+  for (int c = 0; c < 27; ++c)
+    cells += bySpan[std::size_t(c)] * weightOf(0, c % 3) * weightOf(1, (c / 3) % 3) * weightOf(2, c / 9);
   return cells / windows;
 }
 
@@ -159,7 +164,7 @@ CroftonDirections croftonDirections(bool image) {
     d.weights.assign(4, 0.25);  // 8 directions 45 degrees apart share the circle alike
     return d;
   }
-  d.steps = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1},
+  d.steps = {{1, 0, 0}, {0, 1, 0},  {0, 0, 1}, {1, 1, 0},  {1, -1, 0}, {1, 0, 1},  {1, 0, -1},
              {0, 1, 1}, {0, 1, -1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
   d.weights.assign(d.steps.size(), 0.0);
   constexpr int kPoints = 200000;
@@ -171,7 +176,8 @@ CroftonDirections croftonDirections(bool image) {
     double best = -1;
     for (std::size_t s = 0; s < d.steps.size(); ++s) {
       const Axes& v = d.steps[s];
-      const double c = std::abs(x * v[0] + y * v[1] + z * v[2]) / std::sqrt(double(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+      const double c = std::abs(x * v[0] + y * v[1] + z * v[2]) /
+                       std::sqrt(double(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
       if (c > best) best = c, nearest = s;
     }
     d.weights[nearest] += 1.0 / kPoints;
@@ -213,7 +219,8 @@ std::int64_t eulerCharacteristic(const PhaseField& phase, Connectivity connectiv
   std::int64_t chi = 0;
   for (const Span& span : spansOf(phase)) {
     const Axes lo{0, 0, 0}, hi{n[0] - 1 + span[0], n[1] - 1 + span[1], n[2] - 1 + span[2]};
-    const auto cells = std::int64_t(cellsPresent(phase, span, lo, hi, connectivity == Connectivity::Vertices));
+    const auto cells =
+        std::int64_t(cellsPresent(phase, span, lo, hi, connectivity == Connectivity::Vertices));
     chi += dimensionOf(phase, span) % 2 == 0 ? cells : -cells;
   }
   // Open cells give the Euler characteristic with compact support: (-1)^dimension times the set's.

@@ -16,13 +16,13 @@ struct TortuosityOptions {
 /// none outside it and across the other faces.
 struct Tortuosity {
   int axis = 0;
-  double fraction = 0;                ///< phi, of the whole phase
-  double effectiveDiffusivity = 0;    ///< D_eff / D_bulk
-  double factor = 0;                  ///< tau = phi D_bulk / D_eff
-  double connectedFraction = 0;       ///< share of the phase joined to both faces
+  double fraction = 0;              ///< phi, of the whole phase
+  double effectiveDiffusivity = 0;  ///< D_eff / D_bulk
+  double factor = 0;                ///< tau = phi D_bulk / D_eff
+  double connectedFraction = 0;     ///< share of the phase joined to both faces
   int iterations = 0;
-  double residual = 0;                ///< relative residual reached
-  double fluxMismatch = 0;            ///< |inflow - outflow| / inflow: how converged the flux is
+  double residual = 0;      ///< relative residual reached
+  double fluxMismatch = 0;  ///< |inflow - outflow| / inflow: how converged the flux is
   double seconds = 0;
 };
 

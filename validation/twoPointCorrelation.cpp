@@ -56,7 +56,8 @@ std::vector<double> cyclicAutocorrelation(const PhaseField& phase, const std::ar
   for (int k = 0; k < d.z; ++k)
     for (int j = 0; j < d.y; ++j)
       for (int i = 0; i < d.x; ++i)
-        f.get()[(std::size_t(k) * ny + std::size_t(j)) * nx + std::size_t(i)] = phase.inside[d.index(i, j, k)];
+        f.get()[(std::size_t(k) * ny + std::size_t(j)) * nx + std::size_t(i)] =
+            phase.inside[d.index(i, j, k)];
   fftw_execute(forward);
   for (std::size_t i = 0; i < spectral; ++i) {
     const double re = spectrum.get()[i][0], im = spectrum.get()[i][1];
@@ -175,7 +176,8 @@ CorrelationCurves twoPointClusterFunction(const Dims& dims, const std::vector<st
                 const std::int32_t l = labels[base];
                 if (l <= 0) continue;
                 const int last = std::min(R, n[a] - 1 - at[a]);
-                for (int r = 0; r <= last; ++r) acc[std::size_t(r)] += labels[base + std::size_t(r) * stride[a]] == l;
+                for (int r = 0; r <= last; ++r)
+                  acc[std::size_t(r)] += labels[base + std::size_t(r) * stride[a]] == l;
               }
           return acc;
         },
@@ -184,7 +186,8 @@ CorrelationCurves twoPointClusterFunction(const Dims& dims, const std::vector<st
           return x;
         });
     const double across = double(dims.count()) / n[a];
-    for (int r = 0; r <= R; ++r) out.axes[std::size_t(a)].push_back(double(same[std::size_t(r)]) / (across * (n[a] - r)));
+    for (int r = 0; r <= R; ++r)
+      out.axes[std::size_t(a)].push_back(double(same[std::size_t(r)]) / (across * (n[a] - r)));
   }
   out.correlationLength = excessLength(isotropicCurve(out), 0.0);
   return out;

@@ -300,3 +300,34 @@ TEST(ExitCodes, ParticleBricksReportTheirBricksAndSeams) {
       0);
   EXPECT_EQ(nlohmann::json::parse(readFile(compared))["brick_seams"], bricks["seams"]);
 }
+
+// `compare --measures`: the materials descriptors of photo, sections and solid for both phases, in
+// the report; a measure it does not know, or one asked of a continuous solid, is one line.
+TEST(ExitCodes, CompareReportsTheMaterialsDescriptors) {
+  const fs::path dir = emptyFolder("compare_measures");
+  const fs::path out = dir / "a.vdb", report = dir / "c.json";
+  ASSERT_EQ(runSolidtex("particles " + kPhoto + " -o " + shellWord(out) + " --size 48 --quiet").exitCode, 0);
+  const Outcome run = runSolidtex("compare " + kPhoto + " " + shellWord(out) + " --measures all --report " +
+                                  shellWord(report));
+  ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? run.out : run.errLines[0]);
+  EXPECT_NE(run.out.find("particles, sections vs photo: S2 rms"), std::string::npos) << run.out;
+  const nlohmann::json materials = nlohmann::json::parse(readFile(report))["materials"];
+  for (const char* phase : {"particles", "matrix"}) {
+    const nlohmann::json& p = materials["phases"][phase];
+    for (const char* field : {"photo", "sections", "solid"}) {
+      EXPECT_EQ(p[field]["s2"]["radial"].size(), materials["max_distance"].get<std::size_t>() + 1) << phase;
+      EXPECT_TRUE(p[field].contains("lineal_path") && p[field].contains("chords") &&
+                  p[field].contains("local_thickness") && p[field].contains("minkowski"));
+    }
+    EXPECT_EQ(p["solid"]["tortuosity"].size(), 3u);
+    EXPECT_TRUE(p["sections_vs_photo"].contains("s2_rms"));
+  }
+  const double photoFraction = materials["phases"]["particles"]["photo"]["fraction"];
+  EXPECT_NEAR(materials["phases"]["matrix"]["photo"]["fraction"].get<double>(), 1 - photoFraction, 1e-12);
+  const fs::path refused = emptyFolder("compare_measures_refused");
+  expectRefused({"compare " + kPhoto + " " + shellWord(out) + " --measures s2,volume --report " +
+                     shellWord(refused / "x.json"),
+                 "compare " + kPhoto + " " + kCt + " --mode continuous --measures s2 --report " +
+                     shellWord(refused / "x.json")},
+                2, refused);
+}

@@ -46,7 +46,9 @@ TEST(ChordLengths, MatrixOfTheBooleanBallModelIsExponential) {
     EXPECT_NEAR(meanChord(counts), expectedMean, 0.04 * expectedMean);
     const std::vector<double> histogram = chordHistogram(counts, 2, 10);
     for (int b = 0; b < 9; ++b)
-      EXPECT_NEAR(histogram[std::size_t(b)], expected[std::size_t(2 * b + 1)] + expected[std::size_t(2 * b + 2)], 0.02) << b;
+      EXPECT_NEAR(histogram[std::size_t(b)],
+                  expected[std::size_t(2 * b + 1)] + expected[std::size_t(2 * b + 2)], 0.02)
+          << b;
   }
   const auto lineal = linealPath(matrix, 20);
   const double phi = matrix.fraction();
@@ -58,7 +60,8 @@ TEST(ChordLengths, MatrixOfTheBooleanBallModelIsExponential) {
 }
 
 TEST(ChordLengths, LeavesOutChordsTheFacesCutUnlessAsked) {
-  const PhaseField row = testing::fieldWhere({10, 1, 1}, [](double x, double, double) { return x < 2 || (x > 3 && x < 7); });
+  const PhaseField row =
+      testing::fieldWhere({10, 1, 1}, [](double x, double, double) { return x < 2 || (x > 3 && x < 7); });
   EXPECT_EQ(chordLengths(row).counts[0], (std::vector<std::size_t>{0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}));
   EXPECT_EQ(chordLengths(row, true).counts[0], (std::vector<std::size_t>{0, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0}));
   EXPECT_TRUE(chordLengths(row).counts[1].empty());

@@ -46,7 +46,8 @@ TEST(LocalThickness, TwoBallsSplitTheCurveByTheirVolumes) {
 
 TEST(LocalThickness, InAnImageIsTheLargestInscribedDisc) {
   // A 9-pixel-wide strip: every pixel lies in a disc of radius 5 (depth to the first pixel outside).
-  const PhaseField strip = testing::fieldWhere({60, 30, 1}, [](double, double y, double) { return y >= 10 && y < 19; });
+  const PhaseField strip =
+      testing::fieldWhere({60, 30, 1}, [](double, double y, double) { return y >= 10 && y < 19; });
   const LocalThickness t = localThickness(strip, {10});
   EXPECT_NEAR(t.sizes.front(), 5.0, 1e-9);
   EXPECT_NEAR(t.cumulative.front(), 1.0, 1e-12);

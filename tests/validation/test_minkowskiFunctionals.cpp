@@ -15,7 +15,8 @@ double sq(double v) { return v * v; }
 
 PhaseField ball(int n, double r) {
   const double c = 0.5 * (n - 1) + 0.3;  // off the lattice's symmetry
-  return fieldWhere({n, n, n}, [&](double x, double y, double z) { return sq(x - c) + sq(y - c) + sq(z - c) <= r * r; });
+  return fieldWhere({n, n, n},
+                    [&](double x, double y, double z) { return sq(x - c) + sq(y - c) + sq(z - c) <= r * r; });
 }
 
 PhaseField torus(double big, double small) {
@@ -66,7 +67,7 @@ TEST(MinkowskiDensities, SurfaceAndMeanCurvatureOfADigitalBall) {
     EXPECT_NEAR(m.fraction * volume, 4.0 / 3.0 * std::numbers::pi * r * r * r, 0.01 * r * r * r);
     const double windows = periodic ? volume : std::pow(55.0, 3);
     EXPECT_NEAR(m.euler * windows, 1.0, 1e-9);  // the ball's cells are in every window they could be
-    if (!periodic) continue;                   // lines end at the faces: a stationary density
+    if (!periodic) continue;                    // lines end at the faces: a stationary density
     EXPECT_NEAR(m.boundary * volume / (4 * std::numbers::pi * r * r), 1.0, 0.03);
     EXPECT_NEAR(m.meanCurvature * volume / (4 * std::numbers::pi * r), 1.0, 0.05);
   }
@@ -88,9 +89,8 @@ TEST(MinkowskiDensities, SurfaceMatchesTheBooleanBallModel) {
 
 TEST(MinkowskiDensities, PerimeterOfADigitalDisc) {
   const double r = 30;
-  const PhaseField disc = fieldWhere({80, 80, 1}, [&](double x, double y, double) {
-    return sq(x - 39.7) + sq(y - 40.2) <= r * r;
-  });
+  const PhaseField disc = fieldWhere(
+      {80, 80, 1}, [&](double x, double y, double) { return sq(x - 39.7) + sq(y - 40.2) <= r * r; });
   const MinkowskiDensities m = minkowskiDensities(disc, true);
   EXPECT_NEAR(m.boundary * 6400 / (2 * std::numbers::pi * r), 1.0, 0.03);
   EXPECT_NEAR(m.euler * 6400, 1.0, 1e-9);

@@ -10,9 +10,8 @@ namespace {
 using testing::fieldWhere;
 
 TEST(Tortuosity, OfStraightChannelsIsOne) {
-  const PhaseField channels = fieldWhere({30, 20, 20}, [](double, double y, double z) {
-    return int(y) % 5 < 2 && int(z) % 4 != 0;
-  });
+  const PhaseField channels =
+      fieldWhere({30, 20, 20}, [](double, double y, double z) { return int(y) % 5 < 2 && int(z) % 4 != 0; });
   const Tortuosity t = tortuosityFactor(channels, 0);
   EXPECT_NEAR(t.factor, 1.0, 1e-5);
   EXPECT_NEAR(t.effectiveDiffusivity, channels.fraction(), 1e-6);
@@ -25,7 +24,8 @@ TEST(Tortuosity, OfStraightChannelsIsOne) {
 // voxels), so tau = phi / D_eff = (P / (L W)) / (L / (P W)) = (P / L)^2.
 TEST(Tortuosity, OfAStaircaseIsTheSquaredPathRatio) {
   const int L = 24;
-  const PhaseField stairs = fieldWhere({L, L, 1}, [](double x, double y, double) { return (y == x && x < L - 1) || y == x - 1; });
+  const PhaseField stairs =
+      fieldWhere({L, L, 1}, [](double x, double y, double) { return (y == x && x < L - 1) || y == x - 1; });
   const Tortuosity t = tortuosityFactor(stairs, 0);
   const double P = 2 * L - 2;  // one voxel on each face
   EXPECT_NEAR(t.factor, (P / L) * (P / L), 1e-4);

@@ -42,7 +42,8 @@ TEST(TwoPointCorrelation, MatchesTheBooleanBallModelInEveryDirection) {
 
 TEST(TwoPointCorrelation, ZeroPaddingNormalisesByTheOverlap) {
   // Stripes 3 on, 5 off along x: S2 along x is exact for any r once normalised by the overlap count.
-  const PhaseField stripes = testing::fieldWhere({40, 24, 1}, [](double x, double, double) { return int(x) % 8 < 3; });
+  const PhaseField stripes =
+      testing::fieldWhere({40, 24, 1}, [](double x, double, double) { return int(x) % 8 < 3; });
   const CorrelationCurves s2 = twoPointCorrelation(stripes, {16, false});
   EXPECT_TRUE(s2.axes[2].empty());
   for (int r = 0; r <= 16; ++r) {
@@ -59,7 +60,8 @@ TEST(TwoPointClusterFunction, CountsPairsInTheSameParticleOnly) {
   const std::vector<std::int32_t> labels{1, 1, 1, 1, 2, 2, 2, 2};
   const CorrelationCurves c2 = twoPointClusterFunction(dims, labels, 5);
   ASSERT_EQ(c2.axes[0].size(), 6u);
-  for (int r = 0; r <= 5; ++r) EXPECT_NEAR(c2.axes[0][std::size_t(r)], 2.0 * std::max(0, 4 - r) / (8 - r), 1e-12);
+  for (int r = 0; r <= 5; ++r)
+    EXPECT_NEAR(c2.axes[0][std::size_t(r)], 2.0 * std::max(0, 4 - r) / (8 - r), 1e-12);
   EXPECT_NEAR(c2.phaseFraction, 1.0, 1e-12);
 }
 
