@@ -3,7 +3,7 @@
 # bundled photo, and for a truth (`solidtex truth`) with the truth's own volume as a second solid,
 # `compare --measures all` at SIZE^3, seed 1. One Markdown row per photo, solid and phase.
 # Usage: bench/materials_table.sh [SIZE]   (default 128; run from the repo root after building)
-#   PHOTOS="gravel smarties leopard coins"
+#   PHOTOS="gravel smarties leopard coins"   SHAPES="ellipsoid superellipsoid polytope"
 set -euo pipefail
 size=${1:-128}
 bin=${SOLIDTEX_BIN:-$PWD/build/cli/solidtex}
@@ -37,7 +37,9 @@ for photo in ${PHOTOS:-gravel smarties leopard coins}; do
   row "$photo" "solidtex $size^3" "data/particles/$photo.png" "$out/v.vdb"
 done
 # A truth's middle section is the photo: its own volume is the reference level for the solid's.
-"$bin" truth -o "$out/t" --dims 256 256 128 --seed 1 > /dev/null
-"$bin" particles "$out/t/photo.png" -o "$out/v.vdb" --size "$size" --seed 1 --quiet > /dev/null
-row "truth 256x256x128" "solidtex $size^3" "$out/t/photo.png" "$out/v.vdb"
-row "truth 256x256x128" "the truth" "$out/t/photo.png" "$out/t/truth.vdb" --scale 1
+for shape in ${SHAPES:-ellipsoid superellipsoid polytope}; do
+  "$bin" truth -o "$out/t" --shape "$shape" --dims 256 256 128 --seed 1 > /dev/null
+  "$bin" particles "$out/t/photo.png" -o "$out/v.vdb" --size "$size" --seed 1 --quiet > /dev/null
+  row "$shape truth 256x256x128" "solidtex $size^3" "$out/t/photo.png" "$out/v.vdb"
+  row "$shape truth 256x256x128" "the truth" "$out/t/photo.png" "$out/t/truth.vdb" --scale 1
+done

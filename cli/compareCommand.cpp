@@ -94,6 +94,12 @@ Action addCompareCommand(CLI::App& app) {
                    "shorter side at the solid's scale)")
       ->check(CLI::NonNegativeNumber);
   command
+      ->add_option(
+          "--phases", job->phases,
+          "Measure the photo's K colour classes (k-means in CIE L*a*b*, 2-8) and the solid's voxels by "
+          "their nearest class instead of particles and matrix; continuous solids need it for --measures")
+      ->check(CLI::Range(2, 8));
+  command
       ->add_option("--measure-planes", job->materials.planesPerAxis,
                    "Axis sections per axis that the materials descriptors average")
       ->capture_default_str()

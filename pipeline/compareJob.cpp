@@ -16,6 +16,7 @@
 #include "pipeline/materialsPlot.h"
 #include "validation/arrangement.h"
 #include "validation/brickSeams.h"
+#include "validation/colourClasses.h"
 #include "validation/compareSections.h"
 #include "validation/particleVolumes.h"
 #include "voxel/slice.h"
@@ -99,13 +100,42 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   return report;
 }
 
+// The materials descriptors of the photo's colour classes and of the solid's voxels by their
+// nearest class, with the classes' centres.
+nlohmann::json colourMaterials(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
+                               double scale, const MaterialsOptions& materials) {
+  if (!volume.hasColor()) throw InputError(job.volume + " has no colour grid: --phases classifies colours");
+  const ColourClasses classes = colourClasses(photo, job.phases, job.sections.seed);
+  cv::Mat photoClasses;
+  cv::resize(classes.labels, photoClasses,
+             cv::Size(std::max(1, int(std::lround(photo.cols * scale))),
+                      std::max(1, int(std::lround(photo.rows * scale)))),
+             0, 0, cv::INTER_NEAREST);
+  std::vector<Rgb> colours(volume.dims.count());
+  for (int k = 0; k < volume.dims.z; ++k)
+    for (int j = 0; j < volume.dims.y; ++j)
+      for (int i = 0; i < volume.dims.x; ++i) colours[volume.dims.index(i, j, k)] = volume.colorAt(i, j, k);
+  const std::vector<std::uint8_t> voxelClasses = nearestClasses(colours, classes.centres);
+  colours = {};
+  nlohmann::json report =
+      materialsReport(classPhases(photoClasses, volume.dims, voxelClasses, job.phases), materials);
+  report["classes"] = {{"method", "k-means in CIE L*a*b*"}, {"centres_lab", nlohmann::json::array()}};
+  for (int c = 0; c < classes.centres.rows; ++c)
+    report["classes"]["centres_lab"].push_back(
+        {classes.centres.at<float>(c, 0), classes.centres.at<float>(c, 1), classes.centres.at<float>(c, 2)});
+  return report;
+}
+
 // The comparison plot with the materials descriptors' curves below it, when the report has them.
 cv::Mat withMaterials(const cv::Mat& plot, const nlohmann::json& report) {
   if (!report.contains("materials")) return plot;
-  const cv::Mat curves = plotMaterials(report["materials"], plot.cols);
+  constexpr int kMinWidth = 1560;  // four curve panels of 390 pixels
+  const int width = std::max(plot.cols, kMinWidth);
+  const cv::Mat curves = plotMaterials(report["materials"], width);
   if (curves.empty()) return plot;
-  cv::Mat both;
-  cv::vconcat(plot, curves, both);
+  cv::Mat top, both;
+  cv::copyMakeBorder(plot, top, 0, 0, 0, width - plot.cols, cv::BORDER_CONSTANT, cv::Scalar(1, 1, 1));
+  cv::vconcat(top, curves, both);
   return both;
 }
 
@@ -172,7 +202,10 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
   if (materials.measures.any()) {
     const auto boundary = volume.metadata.find("boundary");
     materials.periodic = boundary != volume.metadata.end() && boundary->second == "periodic";
-    report["materials"] = materialsReport(labels, volume.dims, volume.particleId, materials);
+    report["materials"] =
+        job.phases > 0
+            ? colourMaterials(job, photo, volume, scale, materials)
+            : materialsReport(particleAndMatrixPhases(labels, volume.dims, volume.particleId), materials);
   }
   if (job.brickEdge > 0)
     report["brick_seams"] =
@@ -210,8 +243,8 @@ nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
   if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
-  if (job.measures && job.measures->any())
-    throw OptionError("--measures needs the phases of a particle solid; a continuous solid has none yet");
+  if (job.measures && job.measures->any() && job.phases == 0)
+    throw OptionError("--measures on a continuous solid needs --phases K (its colour classes)");
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},
@@ -219,7 +252,13 @@ nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar,
                            {"dims", {volume.dims.x, volume.dims.y, volume.dims.z}},
                            {"quality", continuousQualityJson(quality, job.quality)}};
   if (job.reference) report["reference"] = *job.reference;
-  if (plot) *plot = continuousPlot(exemplar, reference, volume);
+  MaterialsOptions materials = job.materials;
+  if (job.measures) materials.measures = *job.measures;
+  if (job.phases > 0 && materials.measures.any()) {
+    const double scale = job.voxelsPerPixel > 0 ? job.voxelsPerPixel : 1.0;
+    report["materials"] = colourMaterials(job, exemplar, volume, scale, materials);
+  }
+  if (plot) *plot = withMaterials(continuousPlot(exemplar, reference, volume), report);
   return report;
 }
 
@@ -257,8 +296,8 @@ nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const S
                                         : compareContinuous(job, photo, volume, reference, plot);
 }
 
-SolidVolume readSolidToCompare(const std::string& path, CompareMode mode) {
-  if (mode == CompareMode::Continuous) return readVdb(path);
+SolidVolume readSolidToCompare(const std::string& path, CompareMode mode, bool colour) {
+  if (mode == CompareMode::Continuous || colour) return readVdb(path);
   SolidVolume volume = readVdb(path, kParticleIdsOnly);
   return mode == CompareMode::Auto && volume.particleId.empty() ? readVdb(path) : volume;
 }
@@ -270,7 +309,7 @@ nlohmann::json runCompare(const CompareJob& job) {
     if (input) outputs.addInput(*input);
   if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
   addReport(outputs, job.report);
-  const SolidVolume volume = readSolidToCompare(job.volume, job.mode);
+  const SolidVolume volume = readSolidToCompare(job.volume, job.mode, job.phases > 0);
   const cv::Mat photo = loadPhoto(job.photo);
   const cv::Mat reference =
       job.reference && !comparesParticles(job, volume) ? loadPhoto(*job.reference) : cv::Mat();

@@ -41,6 +41,9 @@ struct CompareJob {
   /// replaced by `measures` when given).
   MaterialsOptions materials;
   std::optional<MeasureSelection> measures;  ///< none given: all but tortuosity
+  /// > 0: the phases are the photo's K colour classes (colourClasses) and the solid's voxels by
+  /// their nearest class, for any solid; 0: a particle solid's particles and matrix.
+  int phases = 0;
 };
 
 /// The report of brickSeams for a particle id volume: the planes within 4 voxels of the inner faces
@@ -56,8 +59,8 @@ nlohmann::json compareSolid(const CompareJob& job, const cv::Mat& photo, const S
                             const cv::Mat& reference, cv::Mat* plot = nullptr);
 
 /// Reads a solid to compare in `mode`: a particle solid's ids alone (the particle measures use no
-/// colour, which would take four times their memory), every grid of a continuous one.
-SolidVolume readSolidToCompare(const std::string& path, CompareMode mode);
+/// colour, which would take four times their memory) unless `colour`, every grid of a continuous one.
+SolidVolume readSolidToCompare(const std::string& path, CompareMode mode, bool colour = false);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runCompare(const CompareJob& job);

@@ -61,35 +61,41 @@ cv::Mat curvePanel(int width, const std::string& title, const std::string& xLabe
 Curve againstIndex(const nlohmann::json& values, double step = 1, double first = 0) {
   Curve c;
   if (!values.is_array()) return c;
-  for (std::size_t i = 0; i < values.size(); ++i) c.x.push_back(first + double(i) * step), c.y.push_back(values[i]);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    c.x.push_back(first + double(i) * step), c.y.push_back(values[i]);
   return c;
 }
 
 }  // namespace
 
 cv::Mat plotMaterials(const nlohmann::json& materials, int width) {
-  const nlohmann::json& p = materials.at("phases").at("particles");
+  const nlohmann::json& phases = materials.at("phases");
+  if (phases.empty()) return {};
+  const std::string name = phases.contains("particles") ? "particles" : phases.begin().key();
+  const nlohmann::json& p = phases.at(name);
   const int panelWidth = width / 4;
   const nlohmann::json& s = p.at("sections_vs_photo");
   std::vector<cv::Mat> panels;
   Curve curves[3];
   // Show separations to eight correlation lengths and chords to four mean chords of the photo's.
-  const double reach = 8 * std::max(1.0, p["photo"].contains("s2") ? p["photo"]["s2"].value("correlation_length", 0.0) : 0.0);
+  const double reach =
+      8 * std::max(1.0, p["photo"].contains("s2") ? p["photo"]["s2"].value("correlation_length", 0.0) : 0.0);
   if (p["photo"].contains("s2")) {
     for (int f = 0; f < 3; ++f) curves[f] = againstIndex(p[kFields[f]]["s2"]["radial"]);
-    panels.push_back(curvePanel(panelWidth, "S2(r), particles", "r (voxels)", curves,
+    panels.push_back(curvePanel(panelWidth, "S2(r), " + name, "r (voxels)", curves,
                                 "rms sections " + number(s.value("s2_rms", 0.0)), reach));
   }
   if (p["photo"].contains("lineal_path")) {
     for (int f = 0; f < 3; ++f) curves[f] = againstIndex(p[kFields[f]]["lineal_path"]["axis_mean"]);
-    panels.push_back(curvePanel(panelWidth, "lineal path L(r), particles", "r (voxels)", curves,
+    panels.push_back(curvePanel(panelWidth, "lineal path L(r), " + name, "r (voxels)", curves,
                                 "rms sections " + number(s.value("lineal_path_rms", 0.0)), reach));
   }
   if (p["photo"].contains("chords")) {
     for (int f = 0; f < 3; ++f)
-      curves[f] = againstIndex(p[kFields[f]]["chords"]["histogram"], p[kFields[f]]["chords"]["bin_width"].get<double>(),
+      curves[f] = againstIndex(p[kFields[f]]["chords"]["histogram"],
+                               p[kFields[f]]["chords"]["bin_width"].get<double>(),
                                p[kFields[f]]["chords"]["bin_width"].get<double>());
-    panels.push_back(curvePanel(panelWidth, "chord lengths, particles", "length (voxels)", curves,
+    panels.push_back(curvePanel(panelWidth, "chord lengths, " + name, "length (voxels)", curves,
                                 "mean ratio " + number(s.value("chord_mean_ratio", 0.0)),
                                 4 * p["photo"]["chords"].value("mean", 1.0)));
   }
@@ -98,14 +104,15 @@ cv::Mat plotMaterials(const nlohmann::json& materials, int width) {
       const nlohmann::json& t = p[kFields[f]]["local_thickness"];
       curves[f] = {t["radii"].get<std::vector<double>>(), t["cumulative"].get<std::vector<double>>()};
     }
-    panels.push_back(curvePanel(panelWidth, "share at least r thick, particles", "r (voxels)", curves,
+    panels.push_back(curvePanel(panelWidth, "share at least r thick, " + name, "r (voxels)", curves,
                                 "mean ratio " + number(s.value("local_thickness_mean_ratio", 0.0))));
   }
   if (panels.empty()) return {};
   while (panels.size() < 4) panels.emplace_back(kHeight, panelWidth, CV_32FC3, cv::Scalar(1, 1, 1));
   cv::Mat row;
   cv::hconcat(panels, row);
-  if (row.cols < width) cv::copyMakeBorder(row, row, 0, 0, 0, width - row.cols, cv::BORDER_CONSTANT, cv::Scalar(1, 1, 1));
+  if (row.cols < width)
+    cv::copyMakeBorder(row, row, 0, 0, 0, width - row.cols, cv::BORDER_CONSTANT, cv::Scalar(1, 1, 1));
   return row;
 }
 

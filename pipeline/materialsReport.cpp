@@ -271,12 +271,6 @@ json tortuosityJson(const PhaseField& phase, const TortuosityOptions& options) {
   return out;
 }
 
-FieldToDescribe phaseOfLabelImage(const cv::Mat& labels, bool particles) {
-  FieldToDescribe f{phaseOfLabels(labels, particles), {}};
-  if (particles) f.labels.assign(labels.begin<std::int32_t>(), labels.end<std::int32_t>());
-  return f;
-}
-
 json phaseReport(const FieldToDescribe& photo, const FieldToDescribe& solid, const MaterialsOptions& options,
                  int R) {
   const MeasureSelection& m = options.measures;
@@ -331,21 +325,51 @@ MeasureSelection parseMeasureSelection(const std::string& list) {
   return none;
 }
 
-json materialsReport(const cv::Mat& photoLabels, const Dims& dims, const std::vector<std::int32_t>& ids,
-                     const MaterialsOptions& options) {
-  if (options.planesPerAxis < 1) throw OptionError("the materials measures need at least one plane per axis");
-  const int R = correlationMaxDistance({photoLabels.cols, photoLabels.rows, 1}, options.maxDistance);
-  json phases = json::object();
+std::vector<PhasePair> particleAndMatrixPhases(const cv::Mat& photoLabels, const Dims& dims,
+                                               const std::vector<std::int32_t>& ids) {
+  std::vector<PhasePair> phases;
   for (bool particles : {true, false}) {
-    FieldToDescribe solid{phaseOfIds(dims, ids, particles), {}};
-    if (particles) solid.labels = ids;
-    phases[particles ? "particles" : "matrix"] =
-        phaseReport(phaseOfLabelImage(photoLabels, particles), solid, options, R);
+    PhasePair p{particles ? "particles" : "matrix",
+                phaseOfLabels(photoLabels, particles),
+                phaseOfIds(dims, ids, particles),
+                {},
+                {}};
+    if (particles) {
+      p.photoLabels.assign(photoLabels.begin<std::int32_t>(), photoLabels.end<std::int32_t>());
+      p.solidLabels = ids;
+    }
+    phases.push_back(std::move(p));
   }
+  return phases;
+}
+
+std::vector<PhasePair> classPhases(const cv::Mat& photoClasses, const Dims& dims,
+                                   const std::vector<std::uint8_t>& classes, int count) {
+  std::vector<PhasePair> phases;
+  for (int k = 0; k < count; ++k) {
+    PhasePair p{
+        "phase_" + std::to_string(k), {{photoClasses.cols, photoClasses.rows, 1}, {}}, {dims, {}}, {}, {}};
+    for (auto it = photoClasses.begin<std::int32_t>(); it != photoClasses.end<std::int32_t>(); ++it)
+      p.photo.inside.push_back(*it == k);
+    p.solid.inside.resize(classes.size());
+    for (std::size_t i = 0; i < classes.size(); ++i) p.solid.inside[i] = classes[i] == k;
+    phases.push_back(std::move(p));
+  }
+  return phases;
+}
+
+json materialsReport(const std::vector<PhasePair>& phases, const MaterialsOptions& options) {
+  if (options.planesPerAxis < 1) throw OptionError("the materials measures need at least one plane per axis");
+  if (phases.empty()) throw InputError("the materials measures need at least one phase");
+  const Dims& photo = phases.front().photo.dims;
+  const int R = correlationMaxDistance(photo, options.maxDistance);
+  json out = json::object();
+  for (const PhasePair& p : phases)
+    out[p.name] = phaseReport({p.photo, p.photoLabels}, {p.solid, p.solidLabels}, options, R);
   return {{"max_distance", R},
           {"planes_per_axis", options.planesPerAxis},
           {"periodic", options.periodic},
-          {"phases", phases}};
+          {"phases", out}};
 }
 
 }  // namespace solidtex

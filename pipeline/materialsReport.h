@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "common/Grid.h"
+#include "validation/PhaseField.h"
 #include "validation/tortuosity.h"
 
 namespace solidtex {
@@ -36,10 +37,26 @@ struct MaterialsOptions {
   TortuosityOptions tortuosity;
 };
 
-/// The descriptors of the particle phase and the matrix of a photo's label image (CV_32S at the
-/// solid's scale, 0 = matrix), of the solid's axis sections and of the solid (an id volume) in 3D,
+/// One phase of a photo (at the solid's scale) and of a solid; particle labels for the cluster
+/// function C2 when the phase is a particle phase (else empty).
+struct PhasePair {
+  std::string name;
+  PhaseField photo, solid;
+  std::vector<std::int32_t> photoLabels, solidLabels;
+};
+
+/// The particles (label > 0) and the matrix of a photo's label image (CV_32S at the solid's scale)
+/// and of a solid's particle ids.
+std::vector<PhasePair> particleAndMatrixPhases(const cv::Mat& photoLabels, const Dims& dims,
+                                               const std::vector<std::int32_t>& ids);
+
+/// The phases of a photo's class image (CV_32S, 0..K-1, at the solid's scale) and of the solid's
+/// voxel classes (`classes` per voxel): "phase_0" .. "phase_{K-1}".
+std::vector<PhasePair> classPhases(const cv::Mat& photoClasses, const Dims& dims,
+                                   const std::vector<std::uint8_t>& classes, int count);
+
+/// The descriptors of each phase of the photo, of the solid's axis sections and of the solid in 3D,
 /// with the distances between the photo's curves and the sections' and the solid's.
-nlohmann::json materialsReport(const cv::Mat& photoLabels, const Dims& dims,
-                               const std::vector<std::int32_t>& ids, const MaterialsOptions& options);
+nlohmann::json materialsReport(const std::vector<PhasePair>& phases, const MaterialsOptions& options);
 
 }  // namespace solidtex

@@ -151,30 +151,46 @@ py::dict tortuosity(const py::array& field, int axis, double tolerance) {
 
 void bindMaterialsDescriptors(py::module_& m) {
   const char* field = "field: a numpy image (Y, X) or volume (Z, Y, X); its non-zero values are the phase. ";
-  m.def("two_point_correlation", &twoPoint, py::arg("field"), py::arg("periodic") = false, py::arg("max_distance") = 0,
-        (std::string("Two-point correlation S2(r) of a phase by FFT: arrays x, y, (z) along the axes and radial, "
-                     "r = 0..max_distance voxels (0: a quarter of the shortest side); zero-padded and normalised "
-                     "by the overlap unless periodic. ") + field).c_str());
+  m.def("two_point_correlation", &twoPoint, py::arg("field"), py::arg("periodic") = false,
+        py::arg("max_distance") = 0,
+        (std::string(
+             "Two-point correlation S2(r) of a phase by FFT: arrays x, y, (z) along the axes and radial, "
+             "r = 0..max_distance voxels (0: a quarter of the shortest side); zero-padded and normalised "
+             "by the overlap unless periodic. ") +
+         field)
+            .c_str());
   m.def("cluster_function", &clusterFunction, py::arg("labels"), py::arg("max_distance") = 0,
         "Two-point cluster function C2(r) of labelled particles (int array, 0 = none) along the axes.");
   m.def("lineal_path", &lineal, py::arg("field"), py::arg("max_distance"),
         (std::string("Lineal path L(r) along each axis, r = 0..max_distance. ") + field).c_str());
   m.def("chord_lengths", &chords, py::arg("field"), py::arg("keep_cut") = false,
         (std::string("Chord counts by length in voxels along each axis (index = length); chords the field's "
-                     "faces cut are left out unless keep_cut. ") + field).c_str());
-  m.def("local_thickness", &thickness, py::arg("field"), py::arg("sizes") = 25,
-        (std::string("Local thickness (float32 radius per voxel), the radii sampled and the share of the phase "
-                     "at least that thick. ") + field).c_str());
+                     "faces cut are left out unless keep_cut. ") +
+         field)
+            .c_str());
+  m.def(
+      "local_thickness", &thickness, py::arg("field"), py::arg("sizes") = 25,
+      (std::string("Local thickness (float32 radius per voxel), the radii sampled and the share of the phase "
+                   "at least that thick. ") +
+       field)
+          .c_str());
   m.def("minkowski", &minkowski, py::arg("field"), py::arg("periodic") = false,
         (std::string("Minkowski densities per voxel: fraction, surface (perimeter) density, mean curvature "
-                     "density (volumes), Euler density. ") + field).c_str());
-  m.def("euler_number", &eulerNumber, py::arg("field"), py::arg("connectivity"),
-        (std::string("Euler characteristic as scikit-image's euler_number: connectivity 1 (face neighbours) or "
-                     "2 / 3 (all neighbours in an image / a volume). ") + field).c_str());
+                     "density (volumes), Euler density. ") +
+         field)
+            .c_str());
+  m.def(
+      "euler_number", &eulerNumber, py::arg("field"), py::arg("connectivity"),
+      (std::string("Euler characteristic as scikit-image's euler_number: connectivity 1 (face neighbours) or "
+                   "2 / 3 (all neighbours in an image / a volume). ") +
+       field)
+          .c_str());
   m.def("tortuosity", &tortuosity, py::arg("field"), py::arg("axis") = 0, py::arg("tolerance") = 1e-6,
-        (std::string("Tortuosity factor of a phase along numpy axis `axis` (steady diffusion between the two "
-                     "faces, conjugate gradients to `tolerance`); solidtex.Error when it does not percolate. ") +
-         field).c_str());
+        (std::string(
+             "Tortuosity factor of a phase along numpy axis `axis` (steady diffusion between the two "
+             "faces, conjugate gradients to `tolerance`); solidtex.Error when it does not percolate. ") +
+         field)
+            .c_str());
 }
 
 }  // namespace solidtex::python

@@ -331,3 +331,32 @@ TEST(ExitCodes, CompareReportsTheMaterialsDescriptors) {
                      shellWord(refused / "x.json")},
                 2, refused);
 }
+
+// `compare --phases K`: the photo's colour classes and the solid's voxels by class, for a
+// continuous solid too; K out of range is one line.
+TEST(ExitCodes, CompareMeasuresColourPhasesOfAContinuousSolid) {
+  const fs::path dir = emptyFolder("compare_phases");
+  const fs::path out = dir / "c.vdb", report = dir / "c.json";
+  ASSERT_EQ(runSolidtex("synthesize " + kTerra + " --size 32 -o " + shellWord(out) + " --quiet --no-quality")
+                .exitCode,
+            0);
+  const Outcome run =
+      runSolidtex("compare " + kTerra + " " + shellWord(out) + " --phases 3 --report " + shellWord(report));
+  ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? run.out : run.errLines[0]);
+  const nlohmann::json materials = nlohmann::json::parse(readFile(report))["materials"];
+  ASSERT_EQ(materials["phases"].size(), 3u);
+  ASSERT_EQ(materials["classes"]["centres_lab"].size(), 3u);
+  double photo = 0, solid = 0;
+  for (const auto& [name, phase] : materials["phases"].items()) {
+    photo += phase["photo"]["fraction"].get<double>();
+    solid += phase["solid"]["fraction"].get<double>();
+  }
+  EXPECT_NEAR(photo, 1.0, 1e-9);
+  EXPECT_NEAR(solid, 1.0, 1e-9);
+  const fs::path refused = emptyFolder("compare_phases_refused");
+  expectRefused(
+      {"compare " + kTerra + " " + shellWord(out) + " --phases 1 --report " + shellWord(refused / "x.json"),
+       "compare " + kTerra + " " + shellWord(out) + " --measures s2 --report " +
+           shellWord(refused / "x.json")},
+      2, refused);
+}
