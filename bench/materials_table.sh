@@ -9,8 +9,8 @@ size=${1:-128}
 bin=${SOLIDTEX_BIN:-$PWD/build/cli/solidtex}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-echo "| photo | solid | phase | fraction photo / solid | S2 rms sections / solid | correlation length ratio (solid) | mean chord ratio sections / solid | local thickness ratio (sections) | perimeter ratio (sections) | S_V / (4/pi L_A) | tortuosity x / y / z | seconds (measures) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| photo | solid | phase | fraction photo / solid | S2 rms sections / solid | correlation length ratio (solid) | mean chord ratio sections / solid | local thickness ratio (sections) | perimeter ratio (sections) | S_V / (4/pi L_A) | tortuosity x / y / z |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 row() {  # photo-label solid-label photo vdb [compare options]
   local label=$1 solid=$2 photo=$3 vdb=$4
   shift 4
@@ -29,7 +29,7 @@ for name, p in phases.items():
     print(f"| {label} | {solid} | {name} | {p['photo']['fraction']:.3f} / {p['solid']['fraction']:.3f} "
           f"| {s['s2_rms']:.4f} / {v['s2_rms']:.4f} | {v['s2_correlation_length_ratio']:.2f} "
           f"| {s['chord_mean_ratio']:.2f} / {v['chord_mean_ratio']:.2f} | {s['local_thickness_mean_ratio']:.2f} "
-          f"| {s['perimeter_density_ratio']:.2f} | {v['surface_density_ratio']:.2f} | {taus} | {end - start:.0f} |")
+          f"| {s['perimeter_density_ratio']:.2f} | {v['surface_density_ratio']:.2f} | {taus} |")
 PY
 }
 for photo in ${PHOTOS:-gravel smarties leopard coins}; do

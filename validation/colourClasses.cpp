@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
-#include <opencv2/core.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <opencv2/core.hpp>
 
 #include "common/Error.h"
 #include "segmentation/detail/color.h"
@@ -37,11 +37,13 @@ ColourClasses colourClasses(const cv::Mat& photo, int classes, std::uint64_t see
   if (samples.rows < classes) throw InputError("the photo has fewer pixels than --phases");
   cv::Mat labels, centres;
   cv::theRNG().state = seed == 0 ? 1 : seed;  // k-means++ draws from OpenCV's thread's generator
-  cv::kmeans(samples, classes, labels, cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 100, 1e-4),
-             3, cv::KMEANS_PP_CENTERS, centres);
+  cv::kmeans(samples, classes, labels,
+             cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 100, 1e-4), 3,
+             cv::KMEANS_PP_CENTERS, centres);
   std::vector<int> order(static_cast<std::size_t>(classes));
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return centres.at<float>(a, 0) < centres.at<float>(b, 0); });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return centres.at<float>(a, 0) < centres.at<float>(b, 0); });
   std::vector<int> rank(static_cast<std::size_t>(classes));
   ColourClasses out;
   out.centres.create(classes, 3, CV_32F);
@@ -50,7 +52,8 @@ ColourClasses colourClasses(const cv::Mat& photo, int classes, std::uint64_t see
     centres.row(order[std::size_t(r)]).copyTo(out.centres.row(r));
   }
   out.labels.create(photo.rows, photo.cols, CV_32S);
-  for (int i = 0; i < labels.rows; ++i) out.labels.at<std::int32_t>(i / photo.cols, i % photo.cols) = rank[std::size_t(labels.at<int>(i))];
+  for (int i = 0; i < labels.rows; ++i)
+    out.labels.at<std::int32_t>(i / photo.cols, i % photo.cols) = rank[std::size_t(labels.at<int>(i))];
   return out;
 }
 

@@ -16,7 +16,8 @@ TEST(ColourClasses, FindsTheColoursOfAPhotoAndClassifiesVoxelsAlike) {
   for (int y = 0; y < 60; ++y)
     for (int x = 0; x < 90; ++x) {
       const cv::Vec3f c = colours[x / 30];
-      photo.at<cv::Vec3f>(y, x) = c + cv::Vec3f(float(noise.gaussian(0.01)), float(noise.gaussian(0.01)), 0.0f);
+      photo.at<cv::Vec3f>(y, x) =
+          c + cv::Vec3f(float(noise.gaussian(0.01)), float(noise.gaussian(0.01)), 0.0f);
     }
   const ColourClasses classes = colourClasses(photo, 3, 7);
   ASSERT_EQ(classes.centres.rows, 3);
@@ -24,9 +25,11 @@ TEST(ColourClasses, FindsTheColoursOfAPhotoAndClassifiesVoxelsAlike) {
   EXPECT_LT(classes.centres.at<float>(1, 0), classes.centres.at<float>(2, 0));
   const int expected[3] = {2, 0, 1};  // the blocks' classes by lightness: light, dark, red
   for (int y = 0; y < 60; ++y)
-    for (int x = 0; x < 90; ++x) ASSERT_EQ(classes.labels.at<std::int32_t>(y, x), expected[x / 30]) << x << ' ' << y;
+    for (int x = 0; x < 90; ++x)
+      ASSERT_EQ(classes.labels.at<std::int32_t>(y, x), expected[x / 30]) << x << ' ' << y;
   std::vector<Rgb> voxels;
-  for (const cv::Vec3f& c : colours) voxels.push_back({srgbToLinear(c[0]), srgbToLinear(c[1]), srgbToLinear(c[2])});
+  for (const cv::Vec3f& c : colours)
+    voxels.push_back({srgbToLinear(c[0]), srgbToLinear(c[1]), srgbToLinear(c[2])});
   EXPECT_EQ(nearestClasses(voxels, classes.centres), (std::vector<std::uint8_t>{2, 0, 1}));
   EXPECT_EQ(colourClasses(photo, 3, 7).labels.at<std::int32_t>(0, 0), classes.labels.at<std::int32_t>(0, 0));
 }
