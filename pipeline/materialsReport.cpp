@@ -33,26 +33,13 @@ struct Descriptors {
   MinkowskiDensities minkowski;
 };
 
-Curve meanOfAxes(const std::array<Curve, 3>& axes) {
-  Curve mean;
-  int count = 0;
-  for (const Curve& a : axes) {
-    if (a.empty()) continue;
-    mean.resize(a.size(), 0.0);
-    for (std::size_t r = 0; r < a.size(); ++r) mean[r] += a[r];
-    ++count;
-  }
-  for (double& v : mean) v /= std::max(count, 1);
-  return mean;
-}
-
-struct FieldToDescribe {
-  PhaseField phase;
-  std::vector<std::int32_t> labels;  // of the particles, for C2; empty for the matrix
+// A phase and, for a particle phase, its particles' labels (for C2; else empty).
+struct Field {
+  const PhaseField& phase;
+  const std::vector<std::int32_t>& labels;
 };
 
-Descriptors describe(const FieldToDescribe& field, const MeasureSelection& m, int R, double largest,
-                     bool periodic) {
+Descriptors describe(const Field& field, const MeasureSelection& m, int R, double largest, bool periodic) {
   Descriptors d;
   const PhaseField& phase = field.phase;
   d.fraction = phase.fraction();
@@ -63,13 +50,13 @@ Descriptors describe(const FieldToDescribe& field, const MeasureSelection& m, in
     d.s2Length = s2.correlationLength;
     if (!field.labels.empty()) {
       const CorrelationCurves c2 = twoPointClusterFunction(phase.dims, field.labels, R);
-      d.c2 = meanOfAxes(c2.axes);
+      d.c2 = meanOverAxes(c2.axes);
       d.c2Length = c2.correlationLength;
     }
   }
   if (m.linealPath) {
     d.linealAxes = linealPath(phase, R);
-    d.lineal = meanOfAxes(d.linealAxes);
+    d.lineal = meanOverAxes(d.linealAxes);
   }
   if (m.chords) d.chords = chordLengths(phase).counts;
   if (m.sizes) {
@@ -121,12 +108,17 @@ Descriptors meanOf(const std::vector<Descriptors>& parts, const std::vector<int>
   return mean;
 }
 
+struct Section {
+  PhaseField phase;
+  std::vector<std::int32_t> labels;
+};
+
 // The plane across `normal` at `layer`: the other two axes, in order, as its x and y.
-FieldToDescribe sectionOf(const FieldToDescribe& solid, int normal, int layer) {
+Section sectionOf(const Field& solid, int normal, int layer) {
   const Dims& d = solid.phase.dims;
   const std::array<int, 3> n{d.x, d.y, d.z};
   const int u = normal == 0 ? 1 : 0, v = normal == 2 ? 1 : 2;
-  FieldToDescribe plane;
+  Section plane;
   plane.phase.dims = {n[std::size_t(u)], n[std::size_t(v)], 1};
   plane.phase.inside.resize(plane.phase.dims.count());
   if (!solid.labels.empty()) plane.labels.resize(plane.phase.dims.count());
@@ -151,6 +143,15 @@ json axesJson(const std::array<Curve, 3>& axes) {
   return out;
 }
 
+std::vector<std::size_t> pooledChords(const Descriptors& d) {
+  std::vector<std::size_t> pooled;
+  for (const auto& counts : d.chords) {
+    pooled.resize(std::max(pooled.size(), counts.size()), 0);
+    for (std::size_t l = 0; l < counts.size(); ++l) pooled[l] += counts[l];
+  }
+  return pooled;
+}
+
 json descriptorsJson(const Descriptors& d, const MeasureSelection& m, int R, bool solid) {
   json out = {{"fraction", d.fraction}};
   if (m.twoPoint) {
@@ -164,15 +165,13 @@ json descriptorsJson(const Descriptors& d, const MeasureSelection& m, int R, boo
   }
   if (m.chords) {
     json means = json::object(), histograms = json::object();
-    std::vector<std::size_t> pooled;
     for (int a = 0; a < 3; ++a) {
       const auto& counts = d.chords[std::size_t(a)];
       if (counts.empty()) continue;
       means[kAxisNames[a]] = meanChord(counts);
       histograms[kAxisNames[a]] = chordHistogram(counts, kChordBinWidth, kChordBins);
-      pooled.resize(std::max(pooled.size(), counts.size()), 0);
-      for (std::size_t l = 0; l < counts.size(); ++l) pooled[l] += counts[l];
     }
+    const std::vector<std::size_t> pooled = pooledChords(d);
     out["chords"] = {{"mean", meanChord(pooled)},
                      {"axis_mean", means},
                      {"bin_width", kChordBinWidth},
@@ -202,15 +201,6 @@ double largestDifference(const Curve& a, const Curve& b) {
   for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
     worst = std::max(worst, std::abs(a[i] - b[i]));
   return worst;
-}
-
-std::vector<std::size_t> pooledChords(const Descriptors& d) {
-  std::vector<std::size_t> pooled;
-  for (const auto& counts : d.chords) {
-    pooled.resize(std::max(pooled.size(), counts.size()), 0);
-    for (std::size_t l = 0; l < counts.size(); ++l) pooled[l] += counts[l];
-  }
-  return pooled;
 }
 
 // How far a field's curves lie from the photo's.
@@ -271,8 +261,8 @@ json tortuosityJson(const PhaseField& phase, const TortuosityOptions& options) {
   return out;
 }
 
-json phaseReport(const FieldToDescribe& photo, const FieldToDescribe& solid, const MaterialsOptions& options,
-                 int R) {
+json phaseReport(const PhasePair& pair, const MaterialsOptions& options, int R) {
+  const Field photo{pair.photo, pair.photoLabels}, solid{pair.solid, pair.solidLabels};
   const MeasureSelection& m = options.measures;
   const double largest =
       m.sizes ? std::max(largestInscribedRadius(photo.phase), largestInscribedRadius(solid.phase)) : 0;
@@ -282,8 +272,8 @@ json phaseReport(const FieldToDescribe& photo, const FieldToDescribe& solid, con
   const std::array<int, 3> n{solid.phase.dims.x, solid.phase.dims.y, solid.phase.dims.z};
   for (int a = 0; a < 3; ++a)
     for (int t = 1; t <= options.planesPerAxis; ++t) {
-      planes.push_back(describe(sectionOf(solid, a, t * n[std::size_t(a)] / (options.planesPerAxis + 1)), m,
-                                R, largest, false));
+      const Section section = sectionOf(solid, a, t * n[std::size_t(a)] / (options.planesPerAxis + 1));
+      planes.push_back(describe({section.phase, section.labels}, m, R, largest, false));
       normals.push_back(a);
     }
   const Descriptors ofSections = meanOf(planes, normals);
@@ -364,8 +354,7 @@ json materialsReport(const std::vector<PhasePair>& phases, const MaterialsOption
   const Dims& photo = phases.front().photo.dims;
   const int R = correlationMaxDistance(photo, options.maxDistance);
   json out = json::object();
-  for (const PhasePair& p : phases)
-    out[p.name] = phaseReport({p.photo, p.photoLabels}, {p.solid, p.solidLabels}, options, R);
+  for (const PhasePair& p : phases) out[p.name] = phaseReport(p, options, R);
   return {{"max_distance", R},
           {"planes_per_axis", options.planesPerAxis},
           {"periodic", options.periodic},

@@ -38,11 +38,13 @@ int fastFftSize(int n) {
 
 std::array<int, 3> extentOf(const Dims& d) { return {d.x, d.y, d.z}; }
 
+using RealBuffer = std::unique_ptr<double, FftwDeleter>;
+
 // sum_x f(x) f(x + d) for every d of the (padded) torus: the inverse FFT of |F|^2.
-std::vector<double> cyclicAutocorrelation(const PhaseField& phase, const std::array<int, 3>& size) {
+RealBuffer cyclicAutocorrelation(const PhaseField& phase, const std::array<int, 3>& size) {
   const std::size_t nx = std::size_t(size[0]), ny = std::size_t(size[1]), nz = std::size_t(size[2]);
   const std::size_t real = nx * ny * nz, spectral = (nx / 2 + 1) * ny * nz;
-  std::unique_ptr<double, FftwDeleter> f(fftw_alloc_real(real));
+  RealBuffer f(fftw_alloc_real(real));
   std::unique_ptr<fftw_complex, FftwDeleter> spectrum(fftw_alloc_complex(spectral));
   if (!f || !spectrum) throw std::bad_alloc();
   fftw_plan forward, backward;
@@ -70,7 +72,7 @@ std::vector<double> cyclicAutocorrelation(const PhaseField& phase, const std::ar
     fftw_destroy_plan(forward);
     fftw_destroy_plan(backward);
   }
-  return std::vector<double>(f.get(), f.get() + real);
+  return f;
 }
 
 double excessLength(const std::vector<double>& curve, double limit) {
@@ -85,17 +87,7 @@ double excessLength(const std::vector<double>& curve, double limit) {
 
 // The radial curve, or where there is none the mean of the axis curves.
 std::vector<double> isotropicCurve(const CorrelationCurves& c) {
-  if (!c.radial.empty()) return c.radial;
-  std::vector<double> mean;
-  int axes = 0;
-  for (const auto& a : c.axes) {
-    if (a.empty()) continue;
-    mean.resize(a.size(), 0.0);
-    for (std::size_t r = 0; r < a.size(); ++r) mean[r] += a[r];
-    ++axes;
-  }
-  for (double& v : mean) v /= axes;
-  return mean;
+  return c.radial.empty() ? meanOverAxes(c.axes) : c.radial;
 }
 
 }  // namespace
@@ -118,7 +110,7 @@ CorrelationCurves twoPointCorrelation(const PhaseField& phase, const TwoPointOpt
     reach[a] = n[a] > 1 ? R : 0;
     size[a] = options.periodic || n[a] == 1 ? n[a] : fastFftSize(n[a] + R);
   }
-  const std::vector<double> sums = cyclicAutocorrelation(phase, size);
+  const RealBuffer sums = cyclicAutocorrelation(phase, size);
   const auto valueAt = [&](int dx, int dy, int dz) {
     const std::array<int, 3> dv{dx, dy, dz};
     std::size_t index = 0;
@@ -128,7 +120,7 @@ CorrelationCurves twoPointCorrelation(const PhaseField& phase, const TwoPointOpt
       index = index * std::size_t(size[a]) + std::size_t(wrapped);
       pairs *= options.periodic ? n[a] : n[a] - std::abs(dv[a]);
     }
-    return sums[index] / pairs;
+    return sums.get()[index] / pairs;
   };
   CorrelationCurves out;
   out.phaseFraction = phase.fraction();
@@ -191,6 +183,19 @@ CorrelationCurves twoPointClusterFunction(const Dims& dims, const std::vector<st
   }
   out.correlationLength = excessLength(isotropicCurve(out), 0.0);
   return out;
+}
+
+std::vector<double> meanOverAxes(const std::array<std::vector<double>, 3>& axes) {
+  std::vector<double> mean;
+  int count = 0;
+  for (const auto& a : axes) {
+    if (a.empty()) continue;
+    mean.resize(a.size(), 0.0);
+    for (std::size_t r = 0; r < a.size(); ++r) mean[r] += a[r];
+    ++count;
+  }
+  for (double& v : mean) v /= std::max(count, 1);
+  return mean;
 }
 
 double curveDistance(const std::vector<double>& a, const std::vector<double>& b) {

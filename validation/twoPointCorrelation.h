@@ -38,6 +38,9 @@ CorrelationCurves twoPointClusterFunction(const Dims& dims, const std::vector<st
 /// The separation twoPointCorrelation uses for `maxDistance` on a field of `dims`.
 int correlationMaxDistance(const Dims& dims, int maxDistance);
 
+/// The mean of the curves along the axes a field extends in (the others are empty).
+std::vector<double> meanOverAxes(const std::array<std::vector<double>, 3>& axes);
+
 /// Root mean square difference of two curves over their common length.
 double curveDistance(const std::vector<double>& a, const std::vector<double>& b);
 
