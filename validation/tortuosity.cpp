@@ -13,6 +13,7 @@
 
 #include "common/Error.h"
 #include "common/secondsSince.h"
+#include "validation/aggregationMultigrid.h"
 
 namespace solidtex {
 namespace {
@@ -54,9 +55,8 @@ struct DiffusionSystem {
 };
 
 // Unit conductance between face neighbours, 2 to the reservoirs half a voxel beyond the faces;
-// the guess from `start` per voxel where it is a number, else linear across the axis.
-DiffusionSystem diffusionSystem(const PhaseField& phase, const std::vector<std::uint8_t>& active, int axis,
-                                const std::vector<double>& start) {
+// the guess linear across the axis.
+DiffusionSystem diffusionSystem(const PhaseField& phase, const std::vector<std::uint8_t>& active, int axis) {
   const Dims& d = phase.dims;
   const std::array<int, 3> n{d.x, d.y, d.z};
   DiffusionSystem s;
@@ -85,8 +85,7 @@ DiffusionSystem diffusionSystem(const PhaseField& phase, const std::vector<std::
         }
       }
     entries.emplace_back(int(row), int(row), diagonal);
-    const double given = start.empty() ? std::nan("") : start[s.voxel[std::size_t(row)]];
-    s.guess[row] = std::isnan(given) ? 1.0 - (c[std::size_t(axis)] + 0.5) / n[std::size_t(axis)] : given;
+    s.guess[row] = 1.0 - (c[std::size_t(axis)] + 0.5) / n[std::size_t(axis)];
   }
   s.conductance.resize(m, m);
   s.conductance.setFromTriplets(entries.begin(), entries.end());
@@ -102,59 +101,25 @@ std::vector<std::uint8_t> joinedToBothFaces(const PhaseField& phase, int axis) {
   return active;
 }
 
-// Half the resolution along every axis longer than one voxel: a coarse voxel is in the phase when
-// at least half of the fine voxels it holds are.
-PhaseField coarsened(const PhaseField& phase) {
-  const Dims& d = phase.dims;
-  const auto half = [](int v) { return v > 1 ? (v + 1) / 2 : 1; };
-  PhaseField coarse{{half(d.x), half(d.y), half(d.z)}, {}};
-  std::vector<int> in(coarse.dims.count(), 0), all(coarse.dims.count(), 0);
-  for (int k = 0; k < d.z; ++k)
-    for (int j = 0; j < d.y; ++j)
-      for (int i = 0; i < d.x; ++i) {
-        const std::size_t c =
-            coarse.dims.index(d.x > 1 ? i / 2 : 0, d.y > 1 ? j / 2 : 0, d.z > 1 ? k / 2 : 0);
-        in[c] += phase.inside[d.index(i, j, k)];
-        ++all[c];
-      }
-  coarse.inside.resize(in.size());
-  for (std::size_t c = 0; c < in.size(); ++c) coarse.inside[c] = 2 * in[c] >= all[c];
-  return coarse;
-}
-
-constexpr int kCoarsestSide = 48;
-
 struct Solve {
   std::vector<double> concentration;  // per voxel, NaN where no unknown
   int iterations = 0;
   double residual = 0;
 };
 
-// The steady concentration over the active voxels, by conjugate gradients from the solution at half
-// the resolution (nested iteration, down to sides of kCoarsestSide): the fine solve starts with the
-// smooth part of the error gone, which plain CG removes slowest.
+// The steady concentration over the active voxels, by conjugate gradients preconditioned with
+// aggregation multigrid: Jacobi's preconditioner needed 1600 iterations on touching particles at
+// 256^3, the multigrid cycle 41, at a few times the work each.
 Solve steadyConcentration(const PhaseField& phase, const std::vector<std::uint8_t>& active, int axis,
                           double tolerance, int maxIterations) {
   const Dims& d = phase.dims;
-  std::vector<double> start;
-  if (std::min({d.x, d.y, d.z > 1 ? d.z : d.x}) >= 2 * kCoarsestSide) {
-    const PhaseField coarse = coarsened(phase);
-    const std::vector<std::uint8_t> coarseActive = joinedToBothFaces(coarse, axis);
-    if (std::find(coarseActive.begin(), coarseActive.end(), 1) != coarseActive.end()) {
-      const Solve guess = steadyConcentration(coarse, coarseActive, axis, tolerance, maxIterations);
-      start.resize(d.count());
-      for (std::size_t i = 0; i < start.size(); ++i) {
-        const Voxel v = d.voxel(i);
-        start[i] = guess.concentration[coarse.dims.index(d.x > 1 ? v.x / 2 : 0, d.y > 1 ? v.y / 2 : 0,
-                                                         d.z > 1 ? v.z / 2 : 0)];
-      }
-    }
-  }
-  const DiffusionSystem system = diffusionSystem(phase, active, axis, start);
-  start = {};
-  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> solver;
+  const DiffusionSystem system = diffusionSystem(phase, active, axis);
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, AggregationMultigrid> solver;
   solver.setTolerance(tolerance);
   solver.setMaxIterations(maxIterations);
+  std::vector<Voxel> voxels(system.voxel.size());
+  for (std::size_t u = 0; u < voxels.size(); ++u) voxels[u] = d.voxel(system.voxel[u]);
+  solver.preconditioner().setVoxels(std::move(voxels));
   solver.compute(system.conductance);
   const Eigen::VectorXd c = solver.solveWithGuess(system.source, system.guess);
   Solve out{std::vector<double>(d.count(), std::nan("")), int(solver.iterations()), solver.error()};

@@ -27,7 +27,8 @@ struct Tortuosity {
 };
 
 /// The tortuosity factor of a phase along `axis` (0..2; 0..1 in an image), by conjugate gradients
-/// (Eigen) on the face-neighbour graph of the phase's voxels joined to a face. Throws InputError
+/// (Eigen) preconditioned with aggregation multigrid on the face-neighbour graph of the phase's
+/// voxels joined to both faces. Throws InputError
 /// with one line when the phase does not join the two faces.
 Tortuosity tortuosityFactor(const PhaseField& phase, int axis, const TortuosityOptions& options = {});
 

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <tbb/global_control.h>
+
 #include "common/Error.h"
 #include "phaseFixtures.h"
 #include "validation/tortuosity.h"
@@ -40,6 +42,22 @@ TEST(Tortuosity, IgnoresDeadEndsAndIsolatedPores) {
   const Tortuosity t = tortuosityFactor(f, 0);
   EXPECT_NEAR(t.effectiveDiffusivity, 1.0 / 12, 1e-6);
   EXPECT_NEAR(t.connectedFraction, 24.0 / 25, 1e-12);
+}
+
+// Large enough for the multigrid cycle to have levels: the same sums at one thread and at two.
+TEST(Tortuosity, IsTheSameAtAnyThreadCount) {
+  double intensity = 0;
+  const PhaseField matrix = testing::booleanBallsMatrix(40, 4.0, 0.55, 5, &intensity);
+  const auto at = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    return tortuosityFactor(matrix, 2);
+  };
+  const Tortuosity one = at(1), two = at(2);
+  EXPECT_EQ(one.factor, two.factor);
+  EXPECT_EQ(one.iterations, two.iterations);
+  EXPECT_LT(one.residual, 1e-6);
+  EXPECT_LT(one.fluxMismatch, 1e-4);
+  EXPECT_GT(one.factor, 1.0);
 }
 
 }  // namespace
