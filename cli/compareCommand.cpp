@@ -99,6 +99,9 @@ Action addCompareCommand(CLI::App& app) {
           "Measure the photo's K colour classes (k-means in CIE L*a*b*, 2-8) and the solid's voxels by "
           "their nearest class instead of particles and matrix; continuous solids need it for --measures")
       ->check(CLI::Range(2, 8));
+  command->add_option("--phase-mask", job->phaseMask,
+                      "An image of the photo's phases, one per distinct value (2-8), in place of --phases' "
+                      "k-means; the solid's voxels go to the phase of the nearest mean colour");
   command
       ->add_option("--measure-planes", job->materials.planesPerAxis,
                    "Axis sections per axis that the materials descriptors average")

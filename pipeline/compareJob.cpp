@@ -105,7 +105,13 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
 nlohmann::json colourMaterials(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
                                double scale, const MaterialsOptions& materials) {
   if (!volume.hasColor()) throw InputError(job.volume + " has no colour grid: --phases classifies colours");
-  const ColourClasses classes = colourClasses(photo, job.phases, job.sections.seed);
+  const ColourClasses classes =
+      job.phaseMask ? colourClassesOfLabels(photo, loadPhoto(*job.phaseMask), *job.phaseMask + ": phase mask")
+                    : colourClasses(photo, job.phases, job.sections.seed);
+  const int count = classes.centres.rows;
+  if (job.phases > 0 && count > job.phases)
+    throw InputError(*job.phaseMask + " has " + std::to_string(count) + " phases, more than --phases " +
+                     std::to_string(job.phases));
   cv::Mat photoClasses;
   cv::resize(classes.labels, photoClasses,
              cv::Size(std::max(1, int(std::lround(photo.cols * scale))),
@@ -118,8 +124,9 @@ nlohmann::json colourMaterials(const CompareJob& job, const cv::Mat& photo, cons
   const std::vector<std::uint8_t> voxelClasses = nearestClasses(colours, classes.centres);
   colours = {};
   nlohmann::json report =
-      materialsReport(classPhases(photoClasses, volume.dims, voxelClasses, job.phases), materials);
-  report["classes"] = {{"method", "k-means in CIE L*a*b*"}, {"centres_lab", nlohmann::json::array()}};
+      materialsReport(classPhases(photoClasses, volume.dims, voxelClasses, count), materials);
+  report["classes"] = {{"method", job.phaseMask ? "phase mask " + *job.phaseMask : "k-means in CIE L*a*b*"},
+                       {"centres_lab", nlohmann::json::array()}};
   for (int c = 0; c < classes.centres.rows; ++c)
     report["classes"]["centres_lab"].push_back(
         {classes.centres.at<float>(c, 0), classes.centres.at<float>(c, 1), classes.centres.at<float>(c, 2)});
@@ -203,7 +210,7 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
     const auto boundary = volume.metadata.find("boundary");
     materials.periodic = boundary != volume.metadata.end() && boundary->second == "periodic";
     report["materials"] =
-        job.phases > 0
+        job.measuresClasses()
             ? colourMaterials(job, photo, volume, scale, materials)
             : materialsReport(particleAndMatrixPhases(labels, volume.dims, volume.particleId), materials);
   }
@@ -243,8 +250,9 @@ nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
   if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
-  if (job.measures && job.measures->any() && job.phases == 0)
-    throw OptionError("--measures on a continuous solid needs --phases K (its colour classes)");
+  if (job.measures && job.measures->any() && !job.measuresClasses())
+    throw OptionError(
+        "--measures on a continuous solid needs --phases K or --phase-mask (its colour classes)");
   const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},
@@ -254,7 +262,7 @@ nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar,
   if (job.reference) report["reference"] = *job.reference;
   MaterialsOptions materials = job.materials;
   if (job.measures) materials.measures = *job.measures;
-  if (job.phases > 0 && materials.measures.any()) {
+  if (job.measuresClasses() && materials.measures.any()) {
     const double scale = job.voxelsPerPixel > 0 ? job.voxelsPerPixel : 1.0;
     report["materials"] = colourMaterials(job, exemplar, volume, scale, materials);
   }
@@ -305,11 +313,11 @@ SolidVolume readSolidToCompare(const std::string& path, CompareMode mode, bool c
 nlohmann::json runCompare(const CompareJob& job) {
   OutputFiles outputs;
   for (const auto& input : {std::optional(job.photo), std::optional(job.volume), job.truth, job.reference,
-                            job.segmentation.maskPath})
+                            job.segmentation.maskPath, job.phaseMask})
     if (input) outputs.addInput(*input);
   if (job.plot) outputs.addFile("--plot", *job.plot, {".png"});
   addReport(outputs, job.report);
-  const SolidVolume volume = readSolidToCompare(job.volume, job.mode, job.phases > 0);
+  const SolidVolume volume = readSolidToCompare(job.volume, job.mode, job.measuresClasses());
   const cv::Mat photo = loadPhoto(job.photo);
   const cv::Mat reference =
       job.reference && !comparesParticles(job, volume) ? loadPhoto(*job.reference) : cv::Mat();

@@ -44,6 +44,10 @@ struct CompareJob {
   /// > 0: the phases are the photo's K colour classes (colourClasses) and the solid's voxels by
   /// their nearest class, for any solid; 0: a particle solid's particles and matrix.
   int phases = 0;
+  /// An image of the photo's phases, one per distinct value (colourClassesOfLabels), in place of
+  /// the k-means classes; at most `phases` of them when that is given.
+  std::optional<std::string> phaseMask;
+  bool measuresClasses() const { return phases > 0 || phaseMask.has_value(); }
 };
 
 /// The report of brickSeams for a particle id volume: the planes within 4 voxels of the inner faces

@@ -472,6 +472,7 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   job.materials.maxDistance = int(keywords.integer("max_distance").value_or(0));
   job.materials.planesPerAxis = int(keywords.integer("measure_planes").value_or(job.materials.planesPerAxis));
   job.phases = int(keywords.integer("phases").value_or(0));
+  job.phaseMask = keywords.path("phase_mask");
   const py::object referenceArgument =
       kwargs.contains("reference") ? py::object(kwargs["reference"]) : py::none();
   keywords.take("reference");
@@ -480,7 +481,7 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   SolidVolume volume;
   if (const std::optional<std::string> path = asPath(solid)) {
     job.volume = *path;
-    runReleased([&] { volume = readSolidToCompare(*path, job.mode, job.phases > 0); });
+    runReleased([&] { volume = readSolidToCompare(*path, job.mode, job.measuresClasses()); });
   } else {
     volume = solidOf(solid, job.volume);
   }
@@ -532,6 +533,6 @@ PYBIND11_MODULE(solidtex, m) {
         "colours or (Z, Y, X) particle ids). Keywords: mode (auto, particles, continuous), reference (a "
         "second photo), scale, axis_planes, oblique_planes, seed, truth (a .vdb), mask, invert, split, "
         "min_area; measures (s2, lineal, chord, psd, minkowski, tortuosity, all, none), max_distance, "
-        "measure_planes, phases (K colour classes).");
+        "measure_planes, phases (K colour classes), phase_mask (an image of the photo's phases).");
   bindMaterialsDescriptors(m);
 }

@@ -57,6 +57,46 @@ ColourClasses colourClasses(const cv::Mat& photo, int classes, std::uint64_t see
   return out;
 }
 
+ColourClasses colourClassesOfLabels(const cv::Mat& photo, const cv::Mat& labelImage,
+                                    const std::string& name) {
+  if (photo.type() != CV_32FC3 || labelImage.type() != CV_32FC3)
+    throw InputError("colour classes need CV_32FC3 photo and labels");
+  if (labelImage.size() != photo.size())
+    throw InputError(name + " is " + std::to_string(labelImage.cols) + "x" + std::to_string(labelImage.rows) +
+                     " but the photo is " + std::to_string(photo.cols) + "x" + std::to_string(photo.rows));
+  cv::Mat bytes;
+  labelImage.convertTo(bytes, CV_8UC3, 255.0);
+  std::vector<std::uint32_t> packed(bytes.total());
+  for (int i = 0; i < bytes.rows; ++i)
+    for (int j = 0; j < bytes.cols; ++j) {
+      const cv::Vec3b v = bytes.at<cv::Vec3b>(i, j);  // loadPhoto's channels are R, G, B
+      packed[std::size_t(i) * std::size_t(bytes.cols) + std::size_t(j)] =
+          (std::uint32_t(v[0]) << 16) | (std::uint32_t(v[1]) << 8) | v[2];
+    }
+  std::vector<std::uint32_t> values = packed;
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  if (values.size() < 2 || values.size() > std::size_t(kMaxClasses))
+    throw InputError(name + " has " + std::to_string(values.size()) +
+                     " distinct values; a phase mask needs 2 to 8");
+  const cv::Mat lab = segmentation::detail::linearToLab(segmentation::detail::srgbToLinear(photo));
+  ColourClasses out;
+  out.labels.create(photo.rows, photo.cols, CV_32S);
+  out.centres = cv::Mat::zeros(int(values.size()), 3, CV_32F);
+  std::vector<double> sums(3 * values.size(), 0.0), counts(values.size(), 0.0);
+  for (std::size_t p = 0; p < packed.size(); ++p) {
+    const auto c = std::size_t(std::lower_bound(values.begin(), values.end(), packed[p]) - values.begin());
+    out.labels.ptr<std::int32_t>(0)[p] = int(c);
+    const float* l = lab.ptr<float>(0) + 3 * p;
+    for (std::size_t k = 0; k < 3; ++k) sums[3 * c + k] += l[k];
+    ++counts[c];
+  }
+  for (std::size_t c = 0; c < values.size(); ++c)
+    for (std::size_t k = 0; k < 3; ++k)
+      out.centres.at<float>(int(c), int(k)) = float(sums[3 * c + k] / counts[c]);
+  return out;
+}
+
 std::vector<std::uint8_t> nearestClasses(const std::vector<Rgb>& linear, const cv::Mat& centres) {
   std::vector<std::uint8_t> out(linear.size());
   constexpr std::size_t kRun = 4096;

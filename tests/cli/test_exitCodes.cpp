@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "io/imageIO.h"
 #include "io/vdbIO.h"
 #include "tests/cli/runSolidtex.h"
 
@@ -359,4 +360,38 @@ TEST(ExitCodes, CompareMeasuresColourPhasesOfAContinuousSolid) {
        "compare " + kTerra + " " + shellWord(out) + " --measures s2 --report " +
            shellWord(refused / "x.json")},
       2, refused);
+}
+
+// A mask of three grey bands: three phases in the mask's order, each the photo's share of rows.
+// Refused: a mask with more phases than --phases, one of another size, one with a single value.
+TEST(ExitCodes, ComparePhasesFromAMask) {
+  const fs::path dir = emptyFolder("compare_phase_mask");
+  const fs::path out = dir / "c.vdb", report = dir / "c.json";
+  ASSERT_EQ(runSolidtex("synthesize " + kTerra + " --size 32 -o " + shellWord(out) + " --quiet --no-quality")
+                .exitCode,
+            0);
+  const cv::Mat photo =
+      solidtex::loadPhoto((fs::path(SOLIDTEX_DATA_DIR) / "continuous" / "terra.png").string());
+  cv::Mat bands(photo.size(), CV_32FC3), small(photo.rows / 2, photo.cols, CV_32FC3, cv::Scalar::all(0.0));
+  for (int y = 0; y < bands.rows; ++y) bands.row(y).setTo(cv::Scalar::all(0.5 * (3 * y / bands.rows)));
+  small.row(0).setTo(cv::Scalar::all(1.0));
+  const fs::path mask = dir / "bands.png", smallMask = dir / "small.png", flat = dir / "flat.png";
+  solidtex::writeImage(mask.string(), bands);
+  solidtex::writeImage(smallMask.string(), small);
+  solidtex::writeImage(flat.string(), cv::Mat(photo.size(), CV_32FC3, cv::Scalar::all(0.3)));
+  const Outcome run = runSolidtex("compare " + kTerra + " " + shellWord(out) + " --phase-mask " +
+                                  shellWord(mask) + " --report " + shellWord(report));
+  ASSERT_EQ(run.exitCode, 0) << (run.errLines.empty() ? run.out : run.errLines[0]);
+  const nlohmann::json materials = nlohmann::json::parse(readFile(report))["materials"];
+  ASSERT_EQ(materials["phases"].size(), 3u);
+  EXPECT_NE(materials["classes"]["method"].get<std::string>().find("phase mask"), std::string::npos);
+  for (const auto& [name, phase] : materials["phases"].items())
+    EXPECT_NEAR(phase["photo"]["fraction"].get<double>(), 1.0 / 3, 0.02) << name;
+  const fs::path refused = emptyFolder("compare_phase_mask_refused");
+  const std::string to = " --report " + shellWord(refused / "x.json");
+  expectRefused(
+      {"compare " + kTerra + " " + shellWord(out) + " --phases 2 --phase-mask " + shellWord(mask) + to,
+       "compare " + kTerra + " " + shellWord(out) + " --phase-mask " + shellWord(smallMask) + to,
+       "compare " + kTerra + " " + shellWord(out) + " --phase-mask " + shellWord(flat) + to},
+      1, refused);
 }
