@@ -15,6 +15,16 @@ inline double mean(const std::vector<double>& values) {
   return values.empty() ? 0 : sum / double(values.size());
 }
 
+/// The q-quantile (0 <= q <= 1) of sorted values, interpolating linearly between order statistics;
+/// 0 for no values.
+inline double quantileOfSorted(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) return 0;
+  const double at = std::clamp(q, 0.0, 1.0) * double(sorted.size() - 1);
+  const std::size_t below = std::size_t(at);
+  const double above = below + 1 < sorted.size() ? sorted[below + 1] : sorted[below];
+  return sorted[below] + (at - double(below)) * (above - sorted[below]);
+}
+
 /// Two-sample Kolmogorov-Smirnov statistic: the largest gap between the empirical CDFs; 1 when
 /// either sample is empty.
 inline double ksStatistic(std::vector<double> a, std::vector<double> b) {

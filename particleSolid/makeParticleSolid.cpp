@@ -290,6 +290,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
     field.reset();  // placement's largest part, given back before the solid is painted
   }
   returnFreedMemory();
+  solid_.wholeVolumes = wholeParticleVolumes(solid_.placement);
   if (margin > 0) solid_.placement = cropToCountedBox(std::move(solid_.placement));
   return solid_.placement;
 }

@@ -20,6 +20,7 @@
 #include "placement/placeInBricks.h"
 #include "placement/placeLargestFirst.h"
 #include "placement/sectionSizing.h"
+#include "placement/wholeParticleVolumes.h"
 #include "segmentation/analyzeExemplar.h"
 
 namespace solidtex {
@@ -89,7 +90,8 @@ struct ParticleSolid {
   double voxelsPerPixel = 1;  ///< the photo's scale in the volume
   SmoothingFit smoothing;
   SectionSizing sizing;
-  PlacementResult placement;  ///< the placed particles; its ids are moved into `volume`
+  PlacementResult placement;          ///< the placed particles; its ids are moved into `volume`
+  WholeParticleVolumes wholeVolumes;  ///< the placed particles' 3D sizes, before the faces cut them
   /// With ParticleSolidOptions::brickEdge: the bricks, how each went, the colours' times. Its
   /// placement is moved into `placement`.
   std::optional<BrickedPlacementResult> bricks;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "Version.h"
+#include "common/distributionDistance.h"
 #include "segmentation/reportJson.h"
 
 namespace solidtex {
@@ -31,6 +32,19 @@ nlohmann::json placementJson(const PlacementResult& placement, const ExemplarSta
         {"particles_shrunk", placement.particlesBeforeShrinking < 0
                                  ? 0
                                  : int(placement.particles.size()) - placement.particlesBeforeShrinking}}}};
+}
+
+nlohmann::json wholeVolumesJson(const WholeParticleVolumes& whole) {
+  std::vector<double> sorted = whole.volumes;
+  std::sort(sorted.begin(), sorted.end());
+  nlohmann::json quantiles;
+  for (int percent : {5, 10, 25, 50, 75, 90, 95, 99})
+    quantiles[std::to_string(percent)] = quantileOfSorted(sorted, percent / 100.0);
+  return {{"count", sorted.size()},
+          {"mean_volume", mean(sorted)},
+          {"volume_quantiles", quantiles},
+          {"cut_particles", whole.cutParticles},
+          {"cut_share", whole.cutShare}};
 }
 
 nlohmann::json bricksJson(const BrickedPlacementResult& bricked, int edge, int processes) {
@@ -82,18 +96,21 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
   char fraction[32], voxelsPerPixel[32];
   std::snprintf(fraction, sizeof fraction, "%.6f", solid.placement.volumeFraction);
   std::snprintf(voxelsPerPixel, sizeof voxelsPerPixel, "%.9g", solid.voxelsPerPixel);
-  return {{"solidtex_version", SOLIDTEX_VERSION},
-          {"command_line", commandLine},
-          {"seed", std::to_string(options.seed)},
-          {"exemplar", std::filesystem::path(solid.stats.name).filename().string()},
-          {"volume_fraction", fraction},
-          {"voxels_per_pixel", voxelsPerPixel},
-          {"placer", placerName(options.placer)},
-          {"sizing", sizingName(options.sizing)},
-          {"arrangement", arrangementName(options.arrangement)},
-          {"boundary", boundaryName(options.boundary)},
-          {"size_factor", std::to_string(solid.sizing.sizeFactor)},
-          {"smoothing", std::to_string(solid.smoothing.radius)}};
+  std::map<std::string, std::string> metadata = {
+      {"solidtex_version", SOLIDTEX_VERSION},
+      {"command_line", commandLine},
+      {"seed", std::to_string(options.seed)},
+      {"exemplar", std::filesystem::path(solid.stats.name).filename().string()},
+      {"volume_fraction", fraction},
+      {"voxels_per_pixel", voxelsPerPixel},
+      {"placer", placerName(options.placer)},
+      {"sizing", sizingName(options.sizing)},
+      {"arrangement", arrangementName(options.arrangement)},
+      {"boundary", boundaryName(options.boundary)},
+      {"size_factor", std::to_string(solid.sizing.sizeFactor)},
+      {"smoothing", std::to_string(solid.smoothing.radius)}};
+  addWholeVolumesMetadata(solid.wholeVolumes, metadata);
+  return metadata;
 }
 
 nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSolidOptions& options) {
@@ -112,6 +129,8 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
   if (solid.bricks)
     report["bricks"] = bricksJson(*solid.bricks, options.brickEdge, std::max(1, options.brickTeam.size));
   const SectionSizing& sizing = solid.sizing;
+  // Voxels of every placed particle whose centre lies in the volume, before its faces cut it.
+  report["volume"]["placed_particles"] = wholeVolumesJson(solid.wholeVolumes);
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
   report["smoothing"] = {{"radius", solid.smoothing.radius}, {"fitted", !options.smoothing.has_value()}};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
@@ -14,6 +15,7 @@
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/materialsPlot.h"
+#include "placement/wholeParticleVolumes.h"
 #include "validation/arrangement.h"
 #include "validation/brickSeams.h"
 #include "validation/colourClasses.h"
@@ -37,6 +39,10 @@ double scaleOf(const CompareJob& job, const SolidVolume& volume) {
 }
 
 // A solid made with an open boundary is a block of a larger one: its faces cut particles.
+// What the solid's particle volumes are a sample of, as the report names it.
+constexpr const char* kPlacedSample = "placed particles whose centre lies in the block, whole";
+constexpr const char* kBlockSample = "whole particles in the block, Miles-Lantuejoul weighted";
+
 std::vector<double> particleVolumesOf(const SolidVolume& volume) {
   const auto boundary = volume.metadata.find("boundary");
   const bool cut = boundary != volume.metadata.end() && boundary->second == "open";
@@ -74,7 +80,8 @@ double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
 
 // Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
 // the truth's sections are cut at the solid's resolution so that their shapes compare too.
-nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes, double scale,
+nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes,
+                                std::vector<double> blockVolumes, double scale,
                                 const SectionStatistics& solidSections, SectionOptions sectionOptions,
                                 double diameter) {
   const SolidVolume truth = readVdb(truthPath, kParticleIdsOnly);
@@ -84,6 +91,7 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   std::vector<double> truthVolumes = particleVolumesOf(truth);
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
   for (double& v : volumes) v /= scale * scale * scale;
+  for (double& v : blockVolumes) v /= scale * scale * scale;
   const double truthMean = mean(truthVolumes);
   sectionOptions.step = truthScale / scale;
   const SectionStatistics truthSections = sampleSections(truth.dims, truth.particleId, sectionOptions);
@@ -97,6 +105,11 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
                  {"volume_ks", ksStatistic(truthVolumes, volumes)},
                  {"volume_wasserstein1_over_mean",
                   truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
+  if (!blockVolumes.empty())
+    report["whole_in_block"] = {{"solid_mean_volume", mean(blockVolumes)},
+                                {"volume_ks", ksStatistic(truthVolumes, blockVolumes)},
+                                {"volume_wasserstein1_over_mean",
+                                 truthMean > 0 ? wasserstein1(truthVolumes, blockVolumes) / truthMean : 0.0}};
   return report;
 }
 
@@ -170,7 +183,9 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
   const SectionStatistics sections = sampleSections(volume.dims, volume.particleId, sectionOptions);
   const SectionStatistics photoSections = measureLabelImage(labels, sectionOptions);
   const SectionComparison shapes = compareSections(photoSections, sections, diameter);
-  const std::vector<double> volumes = particleVolumesOf(volume);
+  const std::vector<double> blockVolumes = particleVolumesOf(volume);
+  const std::optional<WholeParticleVolumes> placed = readWholeVolumesMetadata(volume.metadata, job.volume);
+  const std::vector<double>& volumes = placed ? placed->volumes : blockVolumes;
   std::size_t occupied = 0;
   for (std::int32_t id : volume.particleId) occupied += id > 0;
 
@@ -180,6 +195,11 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
                       tenBinRatios(volumes),
                       shapes.referenceSolidity,
                       shapes.solidSolidity};
+  if (placed) {
+    char label[64];
+    std::snprintf(label, sizeof label, "solid volumes, whole (%.1f %% cut away)", 100 * placed->cutShare);
+    data.volumeLabel = label;
+  }
   const double photoMean = mean(photoAreas);
   nlohmann::json report = {
       {"mode", "particles"},
@@ -202,8 +222,16 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
       {"shape_and_arrangement", comparisonJson(shapes, "photo")},
       {"window_side", sectionOptions.windowSide},
       {"particle_diameter", diameter}};
+  report["volume_sample"] = placed ? kPlacedSample : kBlockSample;
+  if (placed)
+    report["whole_in_block"] = {{"particles", blockVolumes.size()},
+                                {"mean_volume", mean(blockVolumes)},
+                                {"volume_histogram", tenBinRatios(blockVolumes)},
+                                {"placed_cut_share", placed->cutShare},
+                                {"placed_cut_particles", placed->cutParticles}};
   if (job.truth)
-    report["truth"] = compareWithTruth(*job.truth, volumes, scale, sections, sectionOptions, diameter);
+    report["truth"] = compareWithTruth(*job.truth, volumes, placed ? blockVolumes : std::vector<double>{},
+                                       scale, sections, sectionOptions, diameter);
   MaterialsOptions materials = job.materials;
   if (job.measures) materials.measures = *job.measures;
   if (materials.measures.any()) {

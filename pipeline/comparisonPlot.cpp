@@ -42,7 +42,8 @@ cv::Mat histogramPanel(const ComparisonData& data) {
   std::snprintf(label, sizeof label, "%.2f", top);
   text(panel, label, {6, 54}, 0.4);
   text(panel, "photo areas", {kPanelWidth - 160, 50}, 0.45, kPhotoColor);
-  text(panel, "solid volumes", {kPanelWidth - 160, 70}, 0.45, kVolumeColor);
+  text(panel, data.volumeLabel, {kPanelWidth - 160 - std::max(0, 8 * int(data.volumeLabel.size()) - 150), 70},
+       0.45, kVolumeColor);
   return panel;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@ struct ComparisonData {
   std::array<double, 10> volumeHistogram;
   std::vector<double> photoSolidity;  ///< of the photo's particles at the solid's resolution
   std::vector<double> sectionSolidity;
+  std::string volumeLabel = "solid volumes";  ///< what the volumes are a sample of, in short
 };
 
 /// Ratios of values in 10 equal-width bins between their min and max (the paper's Fig. 9/10 binning).

@@ -195,6 +195,8 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   py::dict result;
   result["particle_id"] = ownedArray(std::move(solid.volume.particleId), {d.z, d.y, d.x});
   result["color"] = ownedArray(interleaved(std::move(solid.volume.color)), {d.z, d.y, d.x, 3});
+  const auto placed = py::ssize_t(solid.wholeVolumes.volumes.size());
+  result["particle_volumes"] = ownedArray(std::move(solid.wholeVolumes.volumes), {placed});
   result["report"] = toPython(report);
   return result;
 }
@@ -452,6 +454,21 @@ SolidVolume solidOf(const py::handle& solid, std::string& name) {
     if (report.contains("volume") && py::dict(report["volume"]).contains("voxels_per_pixel"))
       volume.metadata["voxels_per_pixel"] = py::str(py::dict(report["volume"])["voxels_per_pixel"]);
     if (report.contains("boundary")) volume.metadata["boundary"] = py::str(report["boundary"]);
+  }
+  if (grids.contains("particle_volumes")) {
+    const auto values =
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(grids["particle_volumes"]);
+    if (!values || values.ndim() != 1) throw py::value_error("volume's particle_volumes must be a 1D array");
+    WholeParticleVolumes whole;
+    whole.volumes.assign(values.data(), values.data() + values.size());
+    const py::dict report = grids.contains("report") ? py::dict(grids["report"]) : py::dict();
+    const py::dict volumeReport = report.contains("volume") ? py::dict(report["volume"]) : py::dict();
+    if (volumeReport.contains("placed_particles")) {
+      const py::dict placed = volumeReport["placed_particles"];
+      whole.cutShare = placed["cut_share"].cast<double>();
+      whole.cutParticles = placed["cut_particles"].cast<std::size_t>();
+    }
+    addWholeVolumesMetadata(whole, volume.metadata);
   }
   return volume;
 }
