@@ -25,6 +25,39 @@ inline double quantileOfSorted(const std::vector<double>& sorted, double q) {
   return sorted[below] + (at - double(below)) * (above - sorted[below]);
 }
 
+/// The empirical CDF of `values` at each of `at`: the share of values at or below it.
+inline std::vector<double> empiricalCdfAt(std::vector<double> values, const std::vector<double>& at) {
+  std::sort(values.begin(), values.end());
+  std::vector<double> cdf;
+  cdf.reserve(at.size());
+  for (double x : at)
+    cdf.push_back(values.empty()
+                      ? 0.0
+                      : double(std::upper_bound(values.begin(), values.end(), x) - values.begin()) /
+                            double(values.size()));
+  return cdf;
+}
+
+/// A pointwise percentile band of curves of one length (one per bootstrap resample): per point, the
+/// `low` and `high` quantiles of the curves' values there.
+struct PercentileBand {
+  std::vector<double> low, high;
+};
+
+inline PercentileBand percentileBand(const std::vector<std::vector<double>>& curves, double low,
+                                     double high) {
+  PercentileBand band;
+  if (curves.empty()) return band;
+  std::vector<double> at(curves.size());
+  for (std::size_t point = 0; point < curves.front().size(); ++point) {
+    for (std::size_t c = 0; c < curves.size(); ++c) at[c] = curves[c][point];
+    std::sort(at.begin(), at.end());
+    band.low.push_back(quantileOfSorted(at, low));
+    band.high.push_back(quantileOfSorted(at, high));
+  }
+  return band;
+}
+
 /// Two-sample Kolmogorov-Smirnov statistic: the largest gap between the empirical CDFs; 1 when
 /// either sample is empty.
 inline double ksStatistic(std::vector<double> a, std::vector<double> b) {

@@ -110,6 +110,10 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
       {"size_factor", std::to_string(solid.sizing.sizeFactor)},
       {"smoothing", std::to_string(solid.smoothing.radius)}};
   addWholeVolumesMetadata(solid.wholeVolumes, metadata);
+  const SizingUncertainty& u = solid.sizing.uncertainty;
+  if (!u.bandVolumes.empty())
+    metadata["particle_volume_cdf_band"] =
+        nlohmann::json{{"volumes", u.bandVolumes}, {"cdf_5", u.bandLow}, {"cdf_95", u.bandHigh}}.dump();
   return metadata;
 }
 
@@ -141,9 +145,12 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
   if (options.sizing == Sizing::Sections) {
     report["volume"]["sizing_predicted_ks"] = sizing.predictedKs;
     const SizingUncertainty& u = sizing.uncertainty;
-    report["volume"]["sizing_uncertainty"] = {{"bootstraps", u.bootstraps},
-                                              {"size_factor_5_95", {u.sizeFactorLow, u.sizeFactorHigh}},
-                                              {"mean_volume_relative_spread", u.meanVolumeSpread}};
+    report["volume"]["sizing_uncertainty"] = {
+        {"bootstraps", u.bootstraps},
+        {"size_factor_5_95", {u.sizeFactorLow, u.sizeFactorHigh}},
+        {"mean_volume_relative_spread", u.meanVolumeSpread},
+        {"volume_cdf_band",
+         {{"volumes", u.bandVolumes}, {"cdf", u.bandCdf}, {"cdf_5", u.bandLow}, {"cdf_95", u.bandHigh}}}};
   }
   return report;
 }

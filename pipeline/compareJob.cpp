@@ -80,10 +80,45 @@ double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
 
 // Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
 // the truth's sections are cut at the solid's resolution so that their shapes compare too.
+// The band of the 3D volume CDF the particles' sizing gave (metadata particle_volume_cdf_band), or
+// none for solids without it.
+std::optional<VolumeCdfBand> volumeBandOf(const SolidVolume& solid, const std::string& solidPath) {
+  const auto text = solid.metadata.find("particle_volume_cdf_band");
+  if (text == solid.metadata.end()) return std::nullopt;
+  const nlohmann::json band = nlohmann::json::parse(text->second, nullptr, false);
+  const auto curve = [&](const char* key) {
+    if (band.is_discarded() || !band.contains(key) || !band[key].is_array())
+      throw InputError(solidPath + ": metadata particle_volume_cdf_band is not the band particles writes");
+    return band[key].get<std::vector<double>>();
+  };
+  VolumeCdfBand out{curve("volumes"), curve("cdf_5"), curve("cdf_95")};
+  if (out.volumes.size() < 2 || out.low.size() != out.volumes.size() || out.high.size() != out.volumes.size())
+    throw InputError(solidPath + ": metadata particle_volume_cdf_band has curves of different lengths");
+  return out;
+}
+
+// Where the truth's volume CDF lies against the band: the share of the band's volumes at which it
+// lies inside, and how far outside it goes at most.
+nlohmann::json bandCoverage(const VolumeCdfBand& band, const std::vector<double>& truthVolumes) {
+  const std::vector<double> truth = empiricalCdfAt(truthVolumes, band.volumes);
+  std::size_t inside = 0;
+  double outside = 0;
+  for (std::size_t i = 0; i < band.volumes.size(); ++i) {
+    const double gap = std::max({0.0, band.low[i] - truth[i], truth[i] - band.high[i]});
+    inside += gap == 0;
+    outside = std::max(outside, gap);
+  }
+  return {{"points", band.volumes.size()},
+          {"truth_inside_share", double(inside) / double(band.volumes.size())},
+          {"truth_inside_everywhere", inside == band.volumes.size()},
+          {"largest_excursion", outside}};
+}
+
 nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes,
-                                std::vector<double> blockVolumes, double scale,
-                                const SectionStatistics& solidSections, SectionOptions sectionOptions,
-                                double diameter) {
+                                std::vector<double> blockVolumes, const std::optional<VolumeCdfBand>& band,
+                                double scale, const SectionStatistics& solidSections,
+                                SectionOptions sectionOptions, double diameter,
+                                std::vector<double>& truthOut) {
   const SolidVolume truth = readVdb(truthPath, kParticleIdsOnly);
   if (truth.particleId.empty())
     throw InputError(truthPath + " has no particle_id grid: not a particle solid");
@@ -105,11 +140,13 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
                  {"volume_ks", ksStatistic(truthVolumes, volumes)},
                  {"volume_wasserstein1_over_mean",
                   truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
+  if (band) report["volume_cdf_band"] = bandCoverage(*band, truthVolumes);
   if (!blockVolumes.empty())
     report["whole_in_block"] = {{"solid_mean_volume", mean(blockVolumes)},
                                 {"volume_ks", ksStatistic(truthVolumes, blockVolumes)},
                                 {"volume_wasserstein1_over_mean",
                                  truthMean > 0 ? wasserstein1(truthVolumes, blockVolumes) / truthMean : 0.0}};
+  truthOut = std::move(truthVolumes);
   return report;
 }
 
@@ -195,6 +232,10 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
                       tenBinRatios(volumes),
                       shapes.referenceSolidity,
                       shapes.solidSolidity};
+  if (std::optional<VolumeCdfBand> band = volumeBandOf(volume, job.volume)) {
+    data.volumeBand = std::move(*band);
+    for (double v : volumes) data.solidVolumes.push_back(v / (scale * scale * scale));
+  }
   if (placed) {
     char label[64];
     std::snprintf(label, sizeof label, "solid volumes, whole (%.1f %% cut away)", 100 * placed->cutShare);
@@ -230,8 +271,10 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
                                 {"placed_cut_share", placed->cutShare},
                                 {"placed_cut_particles", placed->cutParticles}};
   if (job.truth)
-    report["truth"] = compareWithTruth(*job.truth, volumes, placed ? blockVolumes : std::vector<double>{},
-                                       scale, sections, sectionOptions, diameter);
+    report["truth"] =
+        compareWithTruth(*job.truth, volumes, placed ? blockVolumes : std::vector<double>{},
+                         data.volumeBand.volumes.empty() ? std::nullopt : std::optional(data.volumeBand),
+                         scale, sections, sectionOptions, diameter, data.truthVolumes);
   MaterialsOptions materials = job.materials;
   if (job.measures) materials.measures = *job.measures;
   if (materials.measures.any()) {

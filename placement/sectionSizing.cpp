@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/Error.h"
+#include "common/distributionDistance.h"
 #include "common/randomDirection.h"
 
 namespace solidtex {
@@ -23,6 +24,7 @@ constexpr double kSmoothing = 0.05;
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
 constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
 constexpr std::uint64_t kBootstrapStream = 0x626f6f74;  // "boot"
+constexpr int kBandPoints = 32;  // volumes the band of the implied volume CDF is given at
 
 std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
   std::vector<Eigen::Vector3d> out;
@@ -67,6 +69,7 @@ std::vector<SectionSample> sampleClass(const ExemplarStats& stats, const Particl
       SectionSample sample = cutAtRandom(centres, along, rng);
       sample.area /= scale * scale;
       sample.width /= scale;
+      sample.volume = double(centres.size()) / (scale * scale * scale);
       out.push_back(sample);
     }
   }
@@ -305,24 +308,67 @@ double impliedMeanVolume(const Fit& fit, const AreaClasses& classes) {
   return total > 0 ? volume / total : 0;
 }
 
+// The 3D volume CDF a fit implies at `at`: each class's share over the volumes of the shapes made
+// for it (every sample is one plane through one shape, so each shape counts alike), scaled by the
+// factor cubed.
+std::vector<double> impliedVolumeCdf(const std::vector<SectionSample>& samples,
+                                     const std::vector<int>& perClass, const Fit& fit,
+                                     const std::vector<double>& at) {
+  const double cube = fit.factor * fit.factor * fit.factor;
+  std::vector<double> cdf(at.size(), 0.0);
+  const double total = fit.shares.sum();
+  if (!(total > 0)) return cdf;
+  for (const SectionSample& s : samples) {
+    const double share = fit.shares[s.particleClass] / total / perClass[std::size_t(s.particleClass)];
+    if (share <= 0) continue;
+    for (std::size_t i = std::size_t(std::lower_bound(at.begin(), at.end(), s.volume * cube) - at.begin());
+         i < at.size(); ++i)
+      cdf[i] += share;
+  }
+  return cdf;
+}
+
+// Log-spaced volumes from half the smallest shape's to twice the largest's, at the factors 1 and 2
+// that bound every fit.
+std::vector<double> bandVolumesOf(const std::vector<SectionSample>& samples) {
+  double lo = INFINITY, hi = 0;
+  for (const SectionSample& s : samples)
+    if (s.volume > 0) lo = std::min(lo, s.volume), hi = std::max(hi, s.volume);
+  if (!(hi > 0)) return {};
+  lo *= 0.5 * std::pow(kSmallestFactor, 3);
+  hi *= 2 * std::pow(kLargestFactor, 3);
+  std::vector<double> volumes;
+  for (int i = 0; i < kBandPoints; ++i)
+    volumes.push_back(lo * std::pow(hi / lo, double(i) / (kBandPoints - 1)));
+  return volumes;
+}
+
 // How far the 3D sizes could move with another photo of as many particles: the fit redone on
 // bootstrap resamples of the photo's particles (the particle shapes' sections kept).
 SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const AreaClasses& classes,
                             double minArea, const PhotoSections& photo, const Fit& fit, int bootstraps,
                             std::uint64_t seed) {
   const auto count = static_cast<std::size_t>(bootstraps);
+  const std::vector<int> perClass = samplesPerClass(samples, classes.count());
+  SizingUncertainty u;
+  u.bandVolumes = bandVolumesOf(samples);
   std::vector<double> factors(count), volumes(count);
+  std::vector<std::vector<double>> cdfs(count);
   tbb::parallel_for(0, bootstraps, [&](int b) {
     Rng rng(deriveSeed(seed, kBootstrapStream + std::uint64_t(b)));
     const Fit again = smallestGoodFit(samples, classes, minArea, resampled(photo, classes, rng));
     factors[std::size_t(b)] = again.factor;
     volumes[std::size_t(b)] = impliedMeanVolume(again, classes);
+    cdfs[std::size_t(b)] = impliedVolumeCdf(samples, perClass, again, u.bandVolumes);
   });
+  u.bandCdf = impliedVolumeCdf(samples, perClass, fit, u.bandVolumes);
+  const PercentileBand band = percentileBand(cdfs, 0.05, 0.95);
+  u.bandLow = band.low;
+  u.bandHigh = band.high;
   const double reference = impliedMeanVolume(fit, classes);
   double squares = 0;
   for (double v : volumes) squares += (v - reference) * (v - reference);
   std::sort(factors.begin(), factors.end());
-  SizingUncertainty u;
   u.bootstraps = bootstraps;
   u.sizeFactorLow = factors[std::size_t(0.05 * (bootstraps - 1))];
   u.sizeFactorHigh = factors[std::size_t(std::ceil(0.95 * (bootstraps - 1)))];

@@ -39,8 +39,9 @@ AreaClasses areaClassesOf(const ExemplarStats& stats, int classes = 16);
 /// One random plane through one particle made for a class, at size factor 1, in photo pixels.
 struct SectionSample {
   int particleClass = 0;
-  double area = 0;   ///< pixels^2; 0 when the plane missed every voxel centre
-  double width = 0;  ///< pixels: the particle's extent along the plane's normal (how likely a plane cuts it)
+  double area = 0;    ///< pixels^2; 0 when the plane missed every voxel centre
+  double width = 0;   ///< pixels: the particle's extent along the plane's normal (how likely a plane cuts it)
+  double volume = 0;  ///< pixels^3 of the particle cut
 };
 
 /// Random sections of factory particles made for each class, `shapesPerClass` shapes cut by
@@ -72,6 +73,10 @@ struct SizingUncertainty {
          sizeFactorHigh = 1;  ///< 5th and 95th percentile of the size factor (the range, for few)
   double meanVolumeSpread =
       0;  ///< root mean square of their mean particle volume less the fit's, / the fit's
+  /// The 3D particle-volume CDF the fit implies (its class shares over the volumes of the shapes made
+  /// for each class, at its size factor) at `bandVolumes` (photo pixels cubed, log-spaced), with the
+  /// 5th and 95th percentiles of the resamples' CDFs there.
+  std::vector<double> bandVolumes, bandCdf, bandLow, bandHigh;
 };
 
 /// Particle sizes whose random sections reproduce the photo's areas.

@@ -70,6 +70,13 @@ TEST_P(ReconstructionOfATruth, DefaultsMatchThePhotoAndTheTruthBetterThanThePape
     return std::abs(std::log(c["truth"]["window_spread_ratio"].get<double>()));
   };
   EXPECT_LT(clustering(sections), clustering(bbox));
+  // Volumes are the placed particles', whole, though the open block's faces cut some of them away;
+  // the sizing's band of the volume CDF is scored against the truth's.
+  for (const nlohmann::json* c : {&sections, &bbox})
+    EXPECT_NE((*c)["volume_sample"].get<std::string>().find("placed"), std::string::npos);
+  EXPECT_GT(sections["whole_in_block"]["placed_cut_share"].get<double>(), 0.0);
+  EXPECT_EQ(sections["truth"]["volume_cdf_band"]["points"], 32);
+  EXPECT_FALSE(bbox["truth"].contains("volume_cdf_band"));  // bbox sizing unfolds nothing
   fs::remove_all(dir);
 }
 

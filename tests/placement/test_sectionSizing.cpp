@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/Error.h"
+#include "discStats.h"
 #include "placement/sectionSizing.h"
 
 namespace solidtex {
@@ -74,6 +75,31 @@ TEST(AreaClasses, SpanThePhotosAreasEvenlyInLogArea) {
   EXPECT_EQ(classes.classOf, (std::vector<int>{0, 2, 3, -1}));
   EXPECT_EQ(classes.classOfArea(10), -1);
   EXPECT_EQ(classes.classOfArea(1e6), 3);
+}
+
+// The band of the 3D volume CDF: a CDF from 0 to 1 over its log-spaced volumes, the 5 % curve
+// never above the 95 % one, and the fit's own CDF within the band's reach: the fit is one of the
+// bootstrap's outcomes, not another model.
+TEST(FitSectionSizing, GivesABandOfTheVolumeCdf) {
+  const ExemplarStats stats = test::discStats(test::kDiscs, 0.25);
+  const ParticleFactory factory(stats, test::fewShapes());
+  const SectionSizing sizing = fitSectionSizing(stats, factory, 1.0, 3, 40);
+  const SizingUncertainty& u = sizing.uncertainty;
+  ASSERT_EQ(u.bandVolumes.size(), 32u);
+  ASSERT_EQ(u.bandLow.size(), 32u);
+  ASSERT_EQ(u.bandHigh.size(), 32u);
+  EXPECT_DOUBLE_EQ(u.bandCdf.front(), 0);
+  EXPECT_NEAR(u.bandCdf.back(), 1, 1e-9);
+  for (std::size_t i = 0; i < u.bandVolumes.size(); ++i) {
+    if (i > 0) {
+      EXPECT_GT(u.bandVolumes[i], u.bandVolumes[i - 1]);
+      EXPECT_GE(u.bandCdf[i], u.bandCdf[i - 1] - 1e-12);
+      EXPECT_GE(u.bandLow[i], u.bandLow[i - 1] - 1e-12);
+    }
+    EXPECT_LE(u.bandLow[i], u.bandHigh[i]);
+    EXPECT_GE(u.bandCdf[i], u.bandLow[i] - 0.1);
+    EXPECT_LE(u.bandCdf[i], u.bandHigh[i] + 0.1);
+  }
 }
 
 TEST(Sizing, ParsesNames) {
