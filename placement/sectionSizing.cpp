@@ -260,10 +260,10 @@ struct Fit {
 };
 
 // Larger particles with their shares shifted to smaller classes give much the same sections, so
-// many factors fit about as well; the smallest of them keeps the largest classes for the largest
-// particles instead of inflating them beyond any the photo implies.
-Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
-                    const PhotoSections& photo) {
+// many factors fit about as well: the fits at factors 1 to 2 whose predicted sections are within
+// the photo's counting noise of the best one's, smallest factor first.
+std::vector<Fit> goodFits(const std::vector<SectionSample>& samples, const AreaClasses& classes,
+                          double minArea, const PhotoSections& photo) {
   const std::vector<int> perClass = samplesPerClass(samples, classes.count());
   const Eigen::VectorXd observed = photo.perClass / photo.perClass.sum();
   std::vector<Fit> fits;
@@ -272,15 +272,19 @@ Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses
     const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, minArea, factor), observed);
     fits.push_back({factor, predictedKs(samples, perClass, minArea, factor, x, photo.areas), x});
   }
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < fits.size(); ++i)
-    if (fits[i].ks < fits[best].ks) best = i;
+  double best = 1;
+  for (const Fit& fit : fits) best = std::min(best, fit.ks);
   const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.areas.size())));
-  std::size_t chosenIndex = 0;
-  while (chosenIndex < best && !(fits[chosenIndex].ks <= fits[best].ks + tolerance)) ++chosenIndex;
-  Fit chosen = fits[chosenIndex];
-  if (!(chosen.shares.sum() > 0)) chosen = {1, 1, observed};  // no shape was cut above the photo's specks
-  return chosen;
+  std::erase_if(fits, [&](const Fit& fit) { return !(fit.ks <= best + tolerance && fit.shares.sum() > 0); });
+  if (fits.empty()) fits.push_back({1, 1, observed});  // no shape was cut above the photo's specks
+  return fits;
+}
+
+// The smallest good factor keeps the largest classes for the largest particles instead of
+// inflating them beyond any the photo implies.
+Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
+                    const PhotoSections& photo) {
+  return goodFits(samples, classes, minArea, photo).front();
 }
 
 // The photo's counted particles drawn again with replacement, as another photo of as many might show.
@@ -356,10 +360,12 @@ SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const Are
   std::vector<std::vector<double>> cdfs(count);
   tbb::parallel_for(0, bootstraps, [&](int b) {
     Rng rng(deriveSeed(seed, kBootstrapStream + std::uint64_t(b)));
-    const Fit again = smallestGoodFit(samples, classes, minArea, resampled(photo, classes, rng));
-    factors[std::size_t(b)] = again.factor;
-    volumes[std::size_t(b)] = impliedMeanVolume(again, classes);
-    cdfs[std::size_t(b)] = impliedVolumeCdf(samples, perClass, again, u.bandVolumes);
+    const std::vector<Fit> fits = goodFits(samples, classes, minArea, resampled(photo, classes, rng));
+    factors[std::size_t(b)] = fits.front().factor;
+    volumes[std::size_t(b)] = impliedMeanVolume(fits.front(), classes);
+    // Any good factor is as likely as another: the band holds what the sections cannot decide too.
+    cdfs[std::size_t(b)] =
+        impliedVolumeCdf(samples, perClass, fits[uniformIndex(rng, fits.size())], u.bandVolumes);
   });
   u.bandCdf = impliedVolumeCdf(samples, perClass, fit, u.bandVolumes);
   const PercentileBand band = percentileBand(cdfs, 0.05, 0.95);
