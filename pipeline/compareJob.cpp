@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <limits>
 
 #include <opencv2/imgproc.hpp>
 
@@ -38,15 +40,21 @@ double scaleOf(const CompareJob& job, const SolidVolume& volume) {
   return std::stod(it->second);
 }
 
-// A solid made with an open boundary is a block of a larger one: its faces cut particles.
-// What the solid's particle volumes are a sample of, as the report names it.
-constexpr const char* kPlacedSample = "placed particles whose centre lies in the block, whole";
-constexpr const char* kBlockSample = "whole particles in the block, Miles-Lantuejoul weighted";
-
-std::vector<double> particleVolumesOf(const SolidVolume& volume) {
+bool cutByFaces(const SolidVolume& volume) {
   const auto boundary = volume.metadata.find("boundary");
-  const bool cut = boundary != volume.metadata.end() && boundary->second == "open";
-  return particleVolumes(volume.dims, volume.particleId, cut);
+  return boundary != volume.metadata.end() && boundary->second == "open";
+}
+
+// A solid made with an open boundary is a block of a larger one: its faces cut particles.
+std::vector<double> particleVolumesOf(const SolidVolume& volume) {
+  return particleVolumes(volume.dims, volume.particleId, cutByFaces(volume));
+}
+
+// What the solid's particle volumes are a sample of, as the report names it.
+const char* volumeSampleOf(const SolidVolume& volume, bool placed) {
+  if (placed) return "placed particles whose centre lies in the block, whole";
+  return cutByFaces(volume) ? "whole particles in the block, Miles-Lantuejoul weighted"
+                            : "particles of the volume";
 }
 
 nlohmann::json summaryJson(const SectionSummary& s) {
@@ -86,14 +94,25 @@ std::optional<VolumeCdfBand> volumeBandOf(const SolidVolume& solid, const std::s
   const auto text = solid.metadata.find("particle_volume_cdf_band");
   if (text == solid.metadata.end()) return std::nullopt;
   const nlohmann::json band = nlohmann::json::parse(text->second, nullptr, false);
-  const auto curve = [&](const char* key) {
-    if (band.is_discarded() || !band.contains(key) || !band[key].is_array())
-      throw InputError(solidPath + ": metadata particle_volume_cdf_band is not the band particles writes");
-    return band[key].get<std::vector<double>>();
+  const auto refuse = [&] {
+    return InputError(solidPath + ": metadata particle_volume_cdf_band is not the band particles writes");
   };
-  VolumeCdfBand out{curve("volumes"), curve("cdf_5"), curve("cdf_95")};
-  if (out.volumes.size() < 2 || out.low.size() != out.volumes.size() || out.high.size() != out.volumes.size())
-    throw InputError(solidPath + ": metadata particle_volume_cdf_band has curves of different lengths");
+  const auto curve = [&](const char* key, double lo, double hi) {
+    if (band.is_discarded() || !band.contains(key) || !band[key].is_array()) throw refuse();
+    std::vector<double> values;
+    for (const nlohmann::json& v : band[key]) {
+      if (!v.is_number() || !(v.get<double>() >= lo && v.get<double>() <= hi)) throw refuse();
+      values.push_back(v.get<double>());
+    }
+    return values;
+  };
+  const double most = std::numeric_limits<double>::max();
+  VolumeCdfBand out{curve("volumes", std::numeric_limits<double>::min(), most), curve("cdf_5", 0, 1),
+                    curve("cdf_95", 0, 1)};
+  if (out.volumes.size() < 2 || out.low.size() != out.volumes.size() ||
+      out.high.size() != out.volumes.size() ||
+      std::adjacent_find(out.volumes.begin(), out.volumes.end(), std::greater_equal<>()) != out.volumes.end())
+    throw refuse();
   return out;
 }
 
@@ -159,7 +178,9 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
 // nearest class, with the classes' centres.
 nlohmann::json colourMaterials(const CompareJob& job, const cv::Mat& photo, const SolidVolume& volume,
                                double scale, const MaterialsOptions& materials) {
-  if (!volume.hasColor()) throw InputError(job.volume + " has no colour grid: --phases classifies colours");
+  if (!volume.hasColor())
+    throw InputError(job.volume + " has no colour grid: --phases and --phase-mask classify colours");
+  if (job.phases != 0 && (job.phases < 2 || job.phases > 8)) throw OptionError("--phases must be in [2, 8]");
   const ColourClasses classes =
       job.phaseMask ? colourClassesOfLabels(photo, loadPhoto(*job.phaseMask), *job.phaseMask + ": phase mask")
                     : colourClasses(photo, job.phases, job.sections.seed);
@@ -268,7 +289,7 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
       {"shape_and_arrangement", comparisonJson(shapes, "photo")},
       {"window_side", sectionOptions.windowSide},
       {"particle_diameter", diameter}};
-  report["volume_sample"] = placed ? kPlacedSample : kBlockSample;
+  report["volume_sample"] = volumeSampleOf(volume, placed.has_value());
   if (placed)
     report["whole_in_block"] = {{"particles", blockVolumes.size()},
                                 {"mean_volume", mean(blockVolumes)},

@@ -8,13 +8,13 @@
 
 namespace solidtex {
 
-/// What the comparison plot shows.
 /// A pointwise band of the 3D particle-volume CDF (the particles' sizing: 5 % and 95 % of its
 /// bootstrap), at log-spaced volumes in photo pixels cubed.
 struct VolumeCdfBand {
   std::vector<double> volumes, low, high;
 };
 
+/// What the comparison plot shows.
 struct ComparisonData {
   std::vector<double> photoAreas;        ///< voxel^2
   std::vector<double> sectionAreas;      ///< voxel^2

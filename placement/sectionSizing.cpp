@@ -259,32 +259,43 @@ struct Fit {
   Eigen::VectorXd shares;
 };
 
+// Section kernels at factors 1 to 2, in steps of kFactorStep: the same for every resample of the photo.
+std::vector<Eigen::MatrixXd> kernelsPerFactor(const std::vector<SectionSample>& samples,
+                                              const AreaClasses& classes, double minArea) {
+  std::vector<Eigen::MatrixXd> kernels;
+  for (int step = 0; kSmallestFactor + step * kFactorStep <= kLargestFactor + 1e-9; ++step)
+    kernels.push_back(sectionKernel(samples, classes, minArea, kSmallestFactor + step * kFactorStep));
+  return kernels;
+}
+
 // Larger particles with their shares shifted to smaller classes give much the same sections, so
-// many factors fit about as well: the fits at factors 1 to 2 whose predicted sections are within
-// the photo's counting noise of the best one's, smallest factor first.
-std::vector<Fit> goodFits(const std::vector<SectionSample>& samples, const AreaClasses& classes,
+// many factors fit about as well: the fits whose predicted sections are within the photo's
+// counting noise of the best one's, smallest factor first.
+std::vector<Fit> goodFits(const std::vector<SectionSample>& samples,
+                          const std::vector<Eigen::MatrixXd>& kernels, const AreaClasses& classes,
                           double minArea, const PhotoSections& photo) {
   const std::vector<int> perClass = samplesPerClass(samples, classes.count());
   const Eigen::VectorXd observed = photo.perClass / photo.perClass.sum();
   std::vector<Fit> fits;
-  for (int step = 0; kSmallestFactor + step * kFactorStep <= kLargestFactor + 1e-9; ++step) {
-    const double factor = kSmallestFactor + step * kFactorStep;
-    const Eigen::VectorXd x = unfoldSections(sectionKernel(samples, classes, minArea, factor), observed);
+  for (std::size_t step = 0; step < kernels.size(); ++step) {
+    const double factor = kSmallestFactor + double(step) * kFactorStep;
+    const Eigen::VectorXd x = unfoldSections(kernels[step], observed);
     fits.push_back({factor, predictedKs(samples, perClass, minArea, factor, x, photo.areas), x});
   }
   double best = 1;
   for (const Fit& fit : fits) best = std::min(best, fit.ks);
   const double tolerance = std::max(kKsTolerance, kKsNoiseShare / std::sqrt(double(photo.areas.size())));
-  std::erase_if(fits, [&](const Fit& fit) { return !(fit.ks <= best + tolerance && fit.shares.sum() > 0); });
-  if (fits.empty()) fits.push_back({1, 1, observed});  // no shape was cut above the photo's specks
+  std::erase_if(fits, [&](const Fit& fit) { return !(fit.ks <= best + tolerance); });
+  if (fits.empty()) fits.push_back({1, 1, observed});  // no KS was a number
   return fits;
 }
 
 // The smallest good factor keeps the largest classes for the largest particles instead of
 // inflating them beyond any the photo implies.
-Fit smallestGoodFit(const std::vector<SectionSample>& samples, const AreaClasses& classes, double minArea,
-                    const PhotoSections& photo) {
-  return goodFits(samples, classes, minArea, photo).front();
+Fit smallestGoodFit(const std::vector<Fit>& good, const PhotoSections& photo) {
+  if (!(good.front().shares.sum() > 0))  // no shape was cut above the photo's specks
+    return {1, 1, photo.perClass / photo.perClass.sum()};
+  return good.front();
 }
 
 // The photo's counted particles drawn again with replacement, as another photo of as many might show.
@@ -329,6 +340,7 @@ std::vector<double> impliedVolumeCdf(const std::vector<SectionSample>& samples,
          i < at.size(); ++i)
       cdf[i] += share;
   }
+  for (double& f : cdf) f = std::min(f, 1.0);  // the shares' sum may pass 1 by rounding
   return cdf;
 }
 
@@ -349,7 +361,8 @@ std::vector<double> bandVolumesOf(const std::vector<SectionSample>& samples) {
 
 // How far the 3D sizes could move with another photo of as many particles: the fit redone on
 // bootstrap resamples of the photo's particles (the particle shapes' sections kept).
-SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const AreaClasses& classes,
+SizingUncertainty bootstrap(const std::vector<SectionSample>& samples,
+                            const std::vector<Eigen::MatrixXd>& kernels, const AreaClasses& classes,
                             double minArea, const PhotoSections& photo, const Fit& fit, int bootstraps,
                             std::uint64_t seed) {
   const auto count = static_cast<std::size_t>(bootstraps);
@@ -360,9 +373,11 @@ SizingUncertainty bootstrap(const std::vector<SectionSample>& samples, const Are
   std::vector<std::vector<double>> cdfs(count);
   tbb::parallel_for(0, bootstraps, [&](int b) {
     Rng rng(deriveSeed(seed, kBootstrapStream + std::uint64_t(b)));
-    const std::vector<Fit> fits = goodFits(samples, classes, minArea, resampled(photo, classes, rng));
-    factors[std::size_t(b)] = fits.front().factor;
-    volumes[std::size_t(b)] = impliedMeanVolume(fits.front(), classes);
+    const PhotoSections again = resampled(photo, classes, rng);
+    const std::vector<Fit> fits = goodFits(samples, kernels, classes, minArea, again);
+    const Fit smallest = smallestGoodFit(fits, again);
+    factors[std::size_t(b)] = smallest.factor;
+    volumes[std::size_t(b)] = impliedMeanVolume(smallest, classes);
     // Any good factor is as likely as another: the band holds what the sections cannot decide too.
     cdfs[std::size_t(b)] =
         impliedVolumeCdf(samples, perClass, fits[uniformIndex(rng, fits.size())], u.bandVolumes);
@@ -391,10 +406,11 @@ SectionSizing fitSectionSizing(const ExemplarStats& stats, const ParticleFactory
   std::vector<SectionSample> samples = sampleParticleSections(stats, factory, classes, voxelsPerPixel, seed);
   std::stable_sort(samples.begin(), samples.end(),
                    [](const SectionSample& a, const SectionSample& b) { return a.area < b.area; });
-  const Fit fit = smallestGoodFit(samples, classes, stats.minArea, photo);
+  const std::vector<Eigen::MatrixXd> kernels = kernelsPerFactor(samples, classes, stats.minArea);
+  const Fit fit = smallestGoodFit(goodFits(samples, kernels, classes, stats.minArea, photo), photo);
   SectionSizing sizing;
   if (bootstraps > 0)
-    sizing.uncertainty = bootstrap(samples, classes, stats.minArea, photo, fit, bootstraps, seed);
+    sizing.uncertainty = bootstrap(samples, kernels, classes, stats.minArea, photo, fit, bootstraps, seed);
   sizing.sizeFactor = fit.factor;
   sizing.predictedKs = fit.ks;
   // A class's share goes to its photo particles as the border correction weighs them, so within a

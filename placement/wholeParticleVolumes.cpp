@@ -52,12 +52,12 @@ std::optional<WholeParticleVolumes> readWholeVolumesMetadata(
     const std::map<std::string, std::string>& metadata, const std::string& file) {
   const auto text = metadata.find("particle_volumes");
   if (text == metadata.end()) return std::nullopt;
-  const auto number = [&](const char* key) {
+  const auto number = [&](const char* key, double most) {
     const auto it = metadata.find(key);
     char* end = nullptr;
     const double value = it == metadata.end() ? 0.0 : std::strtod(it->second.c_str(), &end);
-    if (it != metadata.end() && (end == it->second.c_str() || *end != '\0' || !(value >= 0)))
-      throw InputError(file + ": metadata " + key + " is not a number");
+    if (it != metadata.end() && (end == it->second.c_str() || *end != '\0' || !(value >= 0 && value <= most)))
+      throw InputError(file + ": metadata " + key + " is not a number in [0, " + std::to_string(most) + "]");
     return value;
   };
   WholeParticleVolumes whole;
@@ -67,8 +67,8 @@ std::optional<WholeParticleVolumes> readWholeVolumesMetadata(
     whole.volumes.push_back(double(v));
   }
   if (!in.eof()) throw InputError(file + ": metadata particle_volumes is not a list of voxel counts");
-  whole.cutShare = number("particle_volumes_cut_share");
-  whole.cutParticles = std::size_t(number("particle_volumes_cut_particles"));
+  whole.cutShare = number("particle_volumes_cut_share", 1);
+  whole.cutParticles = std::size_t(number("particle_volumes_cut_particles", double(whole.volumes.size())));
   return whole;
 }
 

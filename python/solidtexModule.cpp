@@ -461,6 +461,9 @@ SolidVolume solidOf(const py::handle& solid, std::string& name) {
     if (!values || values.ndim() != 1) throw py::value_error("volume's particle_volumes must be a 1D array");
     WholeParticleVolumes whole;
     whole.volumes.assign(values.data(), values.data() + values.size());
+    for (double v : whole.volumes)
+      if (!(v >= 1 && v < 1e15))
+        throw py::value_error("volume's particle_volumes must be voxel counts of at least 1");
     const py::dict report = grids.contains("report") ? py::dict(grids["report"]) : py::dict();
     const py::dict volumeReport = report.contains("volume") ? py::dict(report["volume"]) : py::dict();
     if (volumeReport.contains("placed_particles")) {

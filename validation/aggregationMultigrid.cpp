@@ -4,6 +4,7 @@
 #include <deque>
 #include <functional>
 #include <numeric>
+#include <stdexcept>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -20,6 +21,8 @@ using Entry = std::pair<int, double>;
 constexpr int kSmoothingChunk = 8192;
 // At or below this many unknowns the level is solved directly.
 constexpr int kDirectRows = 4000;
+// Aggregates that hardly merge anything (a level of isolated chains) end the hierarchy there.
+constexpr double kStalledShare = 0.8;
 // A piecewise-constant coarse correction undershoots smooth error; scaling it up (Vanek, Mandel and
 // Brezina 1996; Notay's AGMG) took CG from 60 to 41 iterations on touching particles at 256^3.
 constexpr double kCoarseCorrectionWeight = 1.5;
@@ -201,9 +204,12 @@ void AggregationMultigrid::setVoxels(std::vector<Voxel> voxels) { voxels_ = std:
 int AggregationMultigrid::levels() const { return hierarchy_ ? int(hierarchy_->levels.size()) : 0; }
 
 void AggregationMultigrid::build(const Eigen::Map<const Matrix>& a) {
+  if (voxels_.size() != std::size_t(a.rows()))
+    throw std::invalid_argument("AggregationMultigrid: setVoxels needs one voxel per row of the matrix");
   hierarchy_ = std::make_unique<Hierarchy>();
   auto& levels = hierarchy_->levels;
-  std::vector<Voxel> voxels = voxels_;
+  std::vector<Voxel> voxels = std::move(voxels_);
+  voxels_ = {};
   levels.emplace_back().a = RowView::of(a);
   while (true) {
     Hierarchy::Level& level = levels.back();
@@ -215,7 +221,7 @@ void AggregationMultigrid::build(const Eigen::Map<const Matrix>& a) {
         if (view.inner[k] == i) level.inverseDiagonal[i] = 1.0 / view.value[k];
     int coarseRows = 0;
     if (view.rows > kDirectRows) level.coarse = aggregates(view, voxels, coarseRows);
-    if (view.rows <= kDirectRows || coarseRows == view.rows) {
+    if (view.rows <= kDirectRows || coarseRows > kStalledShare * view.rows) {
       level.coarse.clear();
       level.direct = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(
           Eigen::SparseMatrix<double>(Eigen::Map<const Matrix>(view.rows, view.rows, view.outer[view.rows],

@@ -1,5 +1,4 @@
 #pragma once
-#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -26,7 +25,7 @@ public:
   AggregationMultigrid(AggregationMultigrid&&) noexcept;
   AggregationMultigrid& operator=(AggregationMultigrid&&) noexcept;
 
-  /// The voxel of each row of the matrix compute() will get; required before compute().
+  /// The voxel of each row of the matrix compute() will get; required before each compute().
   void setVoxels(std::vector<Voxel> voxels);
 
   template <typename MatrixType>
@@ -37,6 +36,7 @@ public:
   AggregationMultigrid& factorize(const MatrixType& a) {
     return compute(a);
   }
+  /// Builds the levels. `a` (compressed, row-major) is read again by solve(): it must outlive it.
   template <typename MatrixType>
   AggregationMultigrid& compute(const MatrixType& a) {
     build(Eigen::Map<const Matrix>(a.rows(), a.cols(), a.nonZeros(), a.outerIndexPtr(), a.innerIndexPtr(),
@@ -45,12 +45,13 @@ public:
   }
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 
-  /// One V-cycle from zero for a x = b.
+  /// One V-cycle from zero for a x = b. Uses buffers of its own: one call at a time.
   template <typename Rhs>
   Eigen::VectorXd solve(const Eigen::MatrixBase<Rhs>& b) const {
     return cycle(Eigen::VectorXd(b));
   }
 
+  /// Levels built, the finest and the directly solved one included.
   int levels() const;
 
 private:
