@@ -20,7 +20,7 @@
 namespace solidtex {
 namespace {
 
-constexpr int kSizingBootstraps = 50;  // enough for a 5-95 % band of the volume CDF; 0.2 s at 8
+constexpr int kSizingBootstraps = 50;  // enough for a 5-95 % band of the volume CDF
 
 constexpr int kMatrixBlock = 64;     // largest edge of the synthesised matrix block, tiled over the volume
 constexpr int kMinMatrixBlock = 16;  // below it the synthesis has no room for its levels

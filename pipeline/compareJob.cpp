@@ -86,8 +86,6 @@ double truthScaleOf(const std::string& truthPath, const SolidVolume& truth) {
   return truthScale;
 }
 
-// Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
-// the truth's sections are cut at the solid's resolution so that their shapes compare too.
 // The band of the 3D volume CDF the particles' sizing gave (metadata particle_volume_cdf_band), or
 // none for solids without it.
 std::optional<VolumeCdfBand> volumeBandOf(const SolidVolume& solid, const std::string& solidPath) {
@@ -138,6 +136,17 @@ nlohmann::json bandCoverage(const VolumeCdfBand& band, const std::vector<double>
           {"meets_truth_band_everywhere", outside <= truthBound}};
 }
 
+// The solid's volumes against the truth's, both in photo pixels cubed.
+nlohmann::json volumeDistances(const std::vector<double>& truthVolumes, const std::vector<double>& volumes) {
+  const double truthMean = mean(truthVolumes);
+  return {{"solid_mean_volume", mean(volumes)},
+          {"volume_ks", ksStatistic(truthVolumes, volumes)},
+          {"volume_wasserstein1_over_mean",
+           truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}};
+}
+
+// Particle volumes of both solids in photo pixels cubed, so that solids made at any scale compare;
+// the truth's sections are cut at the solid's resolution so that their shapes compare too.
 nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double> volumes,
                                 std::vector<double> blockVolumes, const std::optional<VolumeCdfBand>& band,
                                 double scale, const SectionStatistics& solidSections,
@@ -151,25 +160,17 @@ nlohmann::json compareWithTruth(const std::string& truthPath, std::vector<double
   for (double& v : truthVolumes) v /= truthScale * truthScale * truthScale;
   for (double& v : volumes) v /= scale * scale * scale;
   for (double& v : blockVolumes) v /= scale * scale * scale;
-  const double truthMean = mean(truthVolumes);
   sectionOptions.step = truthScale / scale;
   const SectionStatistics truthSections = sampleSections(truth.dims, truth.particleId, sectionOptions);
   nlohmann::json report =
       comparisonJson(compareSections(truthSections, solidSections, diameter), "truth_sections");
   report.update({{"truth", truthPath},
                  {"particles", truthVolumes.size()},
-                 {"mean_volume", truthMean},
-                 {"solid_mean_volume", mean(volumes)},
-                 {"section_ks", ksStatistic(truthSections.areas, solidSections.areas)},
-                 {"volume_ks", ksStatistic(truthVolumes, volumes)},
-                 {"volume_wasserstein1_over_mean",
-                  truthMean > 0 ? wasserstein1(truthVolumes, volumes) / truthMean : 0.0}});
+                 {"mean_volume", mean(truthVolumes)},
+                 {"section_ks", ksStatistic(truthSections.areas, solidSections.areas)}});
+  report.update(volumeDistances(truthVolumes, volumes));
   if (band) report["volume_cdf_band"] = bandCoverage(*band, truthVolumes);
-  if (!blockVolumes.empty())
-    report["whole_in_block"] = {{"solid_mean_volume", mean(blockVolumes)},
-                                {"volume_ks", ksStatistic(truthVolumes, blockVolumes)},
-                                {"volume_wasserstein1_over_mean",
-                                 truthMean > 0 ? wasserstein1(truthVolumes, blockVolumes) / truthMean : 0.0}};
+  if (!blockVolumes.empty()) report["whole_in_block"] = volumeDistances(truthVolumes, blockVolumes);
   truthOut = std::move(truthVolumes);
   return report;
 }

@@ -25,8 +25,7 @@ constexpr int kBins = 10;
 // A bin takes another particle while it misses more than half of one. Placing until the quota is
 // met overshot it by half a particle a bin on average: a sixth to a half of the volume of the
 // largest bins, which hold one to three particles in a block, taken from the smallest bin, which
-// comes last (default truth at 128^3: volume W1/mean 0.18 and 0.21 against the truth -> 0.14 and
-// 0.08; fraction 0.1: 0.88 and 0.38 -> 0.25 and 0.32).
+// comes last (docs/validation.md, "3D sizes").
 constexpr double kQuotaSlack = 0.5;
 constexpr std::uint64_t kPlacementStream = 0x706c616365;  // "place"
 // Radii asked of the field per shape, evenly from the spaciousness the shape needs at least (its
