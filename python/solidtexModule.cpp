@@ -40,6 +40,7 @@
 #include "synthesis/FrameField.h"
 #include "synthesis/synthesizeFromVolume.h"
 #include "synthesis/synthesizeSolid.h"
+#include "validation/compareSections.h"
 #include "validation/continuousQuality.h"
 
 namespace py = pybind11;
@@ -122,6 +123,7 @@ SegmentationOptions segmentationOptions(Keywords& keywords) {
   readMask(keywords, options);
   options.invert = keywords.flag("invert").value_or(false);
   options.split = keywords.flag("split").value_or(true);
+  options.outlines = parseOutlineMethod(keywords.text("outlines").value_or("auto"));
   options.minArea = keywords.number("min_area").value_or(-1);
   return options;
 }
@@ -201,8 +203,8 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   return result;
 }
 
-/// analyze(photo, **options): the photo's particle statistics as a dict; the outlined photo as
-/// labels= (a PNG) when asked.
+/// analyze(photo, **options): the photo's particle statistics as a dict, with its label image
+/// (particle_labels); the outlined photo as labels= (a PNG) when asked.
 py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
   Keywords keywords("analyze", kwargs);
   const SegmentationOptions options = segmentationOptions(keywords);
@@ -211,6 +213,7 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
   std::string name;
   const cv::Mat image = photoOf(photo, name);
   nlohmann::json report;
+  std::vector<std::int32_t> particleLabels;
   runReleased([&] {
     std::optional<OutputFiles> outputs;
     if (labels || reportPath) {
@@ -221,6 +224,8 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
     }
     const ExemplarStats stats = analyzeExemplar(image, name, options);
     report = toJson(stats);
+    const cv::Mat labelImage = photoLabels(stats, 1.0);
+    particleLabels.assign(labelImage.begin<std::int32_t>(), labelImage.end<std::int32_t>());
     if (!outputs) return;
     if (labels)
       outputs->write(*labels, [&](const std::string& path) { writeImage(path, drawLabels(image, stats)); });
@@ -228,7 +233,9 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
       outputs->write(*reportPath, [&](const std::string& path) { writeJsonFile(path, report); });
     outputs->commit();
   });
-  return toPython(report);
+  py::dict result(toPython(report));
+  result["particle_labels"] = ownedArray(std::move(particleLabels), {image.rows, image.cols});
+  return result;
 }
 
 /// The pixels of an exemplar photo given as a numpy array: (H, W), or (H, W, C) with C <= 4.
@@ -528,8 +535,10 @@ PYBIND11_MODULE(solidtex, m) {
   errorType = new py::object(py::exception<std::runtime_error>(m, "Error", PyExc_RuntimeError));
   m.def("analyze", &analyze, py::arg("photo"),
         "Segments a photo of particles (a path, or a numpy array: (H, W), (H, W, 3) or (H, W, 4), uint8 "
-        "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict. "
-        "Keywords: mask (a path, a bool array or an image array, white = particle), invert, split, min_area; "
+        "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict, "
+        "with particle_labels, an (H, W) int32 array of the particles' ids (0 = background). "
+        "Keywords: mask (a path, a bool array or an image array, white = particle), invert, split, outlines, "
+        "min_area; "
         "labels and report write the outlined photo "
         "(PNG) and the statistics (JSON).");
   m.def("particles", &particles, py::arg("photo"),
@@ -537,7 +546,8 @@ PYBIND11_MODULE(solidtex, m) {
         "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB) and the "
         "report (a dict). Keywords as the command line's options: size, dims, scale, placer, sizing, "
         "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
-        "mask, invert, split, min_area; output (.vdb) and report (.json) write files; progress shows the "
+        "mask, invert, split, outlines, min_area; output (.vdb) and report (.json) write files; progress "
+        "shows the "
         "progress line. Ctrl-C stops it and leaves no file.");
   m.def("synthesize", &synthesize, py::arg("exemplar"),
         "Synthesises a continuous solid from a photo (a path or a numpy image, as analyze takes) or a "
@@ -552,7 +562,8 @@ PYBIND11_MODULE(solidtex, m) {
         "volume a .vdb path, the dict particles() or synthesize() returns, or an array ((Z, Y, X, 3) "
         "colours or (Z, Y, X) particle ids). Keywords: mode (auto, particles, continuous), reference (a "
         "second photo), scale, axis_planes, oblique_planes, seed, truth (a .vdb), mask, invert, split, "
-        "min_area; measures (s2, lineal, chord, psd, minkowski, tortuosity, all, none), max_distance, "
+        "outlines, min_area; measures (s2, lineal, chord, psd, minkowski, tortuosity, all, none), "
+        "max_distance, "
         "measure_planes, phases (K colour classes), phase_mask (an image of the photo's phases).");
   bindMaterialsDescriptors(m);
 }

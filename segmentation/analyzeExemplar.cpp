@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -14,8 +15,11 @@
 #include "io/imageIO.h"
 #include "segmentation/detail/color.h"
 #include "segmentation/detail/fillHoles.h"
+#include "segmentation/detail/halfMaximumOutlines.h"
 #include "segmentation/detail/loadMask.h"
 #include "segmentation/detail/measureParticles.h"
+#include "segmentation/detail/morphology.h"
+#include "segmentation/detail/outlineBlur.h"
 #include "segmentation/detail/separateBackground.h"
 #include "segmentation/detail/splitParticles.h"
 #include "segmentation/detail/summarize.h"
@@ -28,6 +32,10 @@ namespace {
 // small photo survive.
 constexpr double kMinAreaFraction = 1e-4;
 constexpr double kMinAreaFloor = 8;
+// Outlines are redrawn half-way up their edges by default only on a background plain enough for
+// the edge to be a blurred step: its smoothed colour distance wanders by at most this share of the
+// particles' contrast.
+constexpr double kPlainBackground = 0.1;
 // Under 4 pixels a region has no outline to speak of, whatever the photo: noise.
 constexpr double kNoiseArea = 4;
 // A region under an eighth of the photo's typical particle is a speck beside it.
@@ -80,10 +88,44 @@ cv::Mat userMask(const SegmentationOptions& options, const cv::Size& photoSize) 
   return options.mask != 0;
 }
 
-cv::Mat particleMask(const cv::Mat& linear, const SegmentationOptions& options, double minArea) {
-  if (!hasUserMask(options)) return segmentation::detail::separateBackground(linear, minArea, options.invert);
-  cv::Mat mask = userMask(options, linear.size());
-  return options.invert ? cv::Mat(mask == 0) : mask;
+struct ParticleMask {
+  cv::Mat mask;  // CV_8U, 255 on particles
+  double outlineBlur = 0;
+  bool halfMaximum = false;
+};
+
+// Outlines redrawn half-way up their edges when asked, or by default when they look blurred.
+void drawOutlines(ParticleMask& particles, const cv::Mat& linear, const SegmentationOptions& options,
+                  double minArea) {
+  namespace detail = segmentation::detail;
+  const cv::Mat background = particles.mask == 0;
+  if (cv::countNonZero(particles.mask) == 0 || cv::countNonZero(background) == 0) return;
+  const cv::Mat lab = detail::linearToLab(linear);
+  particles.outlineBlur =
+      detail::measureOutlineBlur(detail::distanceFromBackground(lab, background), particles.mask);
+  particles.halfMaximum =
+      particles.outlineBlur > 0 &&
+      (options.outlines == OutlineMethod::HalfMaximum ||
+       (options.outlines == OutlineMethod::Auto && particles.outlineBlur >= kBlurredOutline));
+  if (!particles.halfMaximum) return;
+  const double plainBackground =
+      options.outlines == OutlineMethod::Auto ? kPlainBackground : std::numeric_limits<double>::infinity();
+  cv::Mat outlined = detail::halfMaximumOutlines(lab, particles.mask, particles.outlineBlur, plainBackground);
+  particles.halfMaximum = !outlined.empty();
+  if (!particles.halfMaximum) return;
+  particles.mask = std::move(outlined);
+  detail::removeSmallComponents(particles.mask, minArea);
+  detail::fillSmallHoles(particles.mask, minArea);
+}
+
+ParticleMask particleMask(const cv::Mat& linear, const SegmentationOptions& options, double minArea) {
+  if (hasUserMask(options)) {
+    cv::Mat mask = userMask(options, linear.size());
+    return {options.invert ? cv::Mat(mask == 0) : mask};
+  }
+  ParticleMask particles{segmentation::detail::separateBackground(linear, minArea, options.invert)};
+  drawOutlines(particles, linear, options, minArea);
+  return particles;
 }
 
 void checkPhoto(const cv::Mat& photo, const std::string& name) {
@@ -112,12 +154,19 @@ std::string noParticlesMessage(const ExemplarStats& stats, const SegmentationOpt
 
 }  // namespace
 
+OutlineMethod parseOutlineMethod(const std::string& name) {
+  if (name == "auto") return OutlineMethod::Auto;
+  if (name == "watershed") return OutlineMethod::Watershed;
+  if (name == "half-maximum") return OutlineMethod::HalfMaximum;
+  throw OptionError("unknown outlines '" + name + "': use auto, watershed or half-maximum");
+}
+
 ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
                               const SegmentationOptions& options) {
   checkPhoto(photoSrgb, name);
   const cv::Mat linear = segmentation::detail::srgbToLinear(photoSrgb);
-  const cv::Mat labelsAtNoise =
-      segmentation::detail::labelParticles(particleMask(linear, options, kNoiseArea), options.split);
+  ParticleMask particles = particleMask(linear, options, kNoiseArea);
+  const cv::Mat labelsAtNoise = segmentation::detail::labelParticles(particles.mask, options.split);
   const std::vector<int> areasAtNoise = particleAreas(labelsAtNoise);
 
   ExemplarStats stats;
@@ -134,10 +183,13 @@ ExemplarStats analyzeExemplar(const cv::Mat& photoSrgb, const std::string& name,
     }
   }
   stats.areaShareBelowMinArea = standingOut > 0 ? dropped / standingOut : 0;
-  cv::Mat labels =
-      stats.minArea == kNoiseArea || hasUserMask(options)
-          ? labelsAtNoise
-          : segmentation::detail::labelParticles(particleMask(linear, options, stats.minArea), options.split);
+  if (stats.minArea != kNoiseArea && !hasUserMask(options))
+    particles = particleMask(linear, options, stats.minArea);
+  cv::Mat labels = stats.minArea == kNoiseArea || hasUserMask(options)
+                       ? labelsAtNoise
+                       : segmentation::detail::labelParticles(particles.mask, options.split);
+  stats.outlineBlur = particles.outlineBlur;
+  stats.halfMaximumOutlines = particles.halfMaximum;
   segmentation::detail::fillEnclosedHoles(labels);
   stats.particles = segmentation::detail::measureParticles(labels, linear, stats.minArea);
   if (stats.particles.empty()) throw InputError(noParticlesMessage(stats, options));

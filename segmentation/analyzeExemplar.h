@@ -9,11 +9,26 @@
 namespace solidtex {
 
 /// How the photo is split into particles and background.
+/// How the automatic separation draws the particles' outlines.
+enum class OutlineMethod {
+  Auto,         ///< half-maximum when the photo's outlines look blurred (kBlurredOutline), else watershed
+  Watershed,    ///< where the floods from the background and the particles meet on the edges
+  HalfMaximum,  ///< half-way up each particle's smoothed edge (halfMaximumOutlines)
+};
+
+/// "auto" | "watershed" | "half-maximum"; throws OptionError otherwise.
+OutlineMethod parseOutlineMethod(const std::string& name);
+
+/// Outline blur (pixels, ExemplarStats::outlineBlur) from which OutlineMethod::Auto draws outlines
+/// at half maximum.
+inline constexpr double kBlurredOutline = 1.0;
+
 struct SegmentationOptions {
   cv::Mat mask;  ///< CV_8U of the photo's size, non-zero = particle; replaces the automatic separation
   std::optional<std::string> maskPath;  ///< read with maskFromImage when `mask` is empty
   bool invert = false;  ///< swap what the automatic separation (or the mask) calls particle and background
   bool split = true;    ///< split touching particles (distance transform + watershed)
+  OutlineMethod outlines = OutlineMethod::Auto;  ///< automatic separation only
   double minArea = -1;  ///< pixels; < 0: max(8, the photo's area / 10000), or for a photo whose
                         ///< particles are mostly smaller, an eighth of its typical particle (>= 4)
 };

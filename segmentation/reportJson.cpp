@@ -27,6 +27,8 @@ nlohmann::json toJson(const ExemplarStats& stats) {
           {"particles", std::move(particles)},
           {"area_fraction", stats.areaFraction},
           {"background_color", rgb(stats.backgroundColor)},
+          {"outline_blur", stats.outlineBlur},
+          {"outlines", stats.halfMaximumOutlines ? "half-maximum" : "watershed"},
           {"min_area", stats.minArea},
           {"regions_below_min_area", stats.regionsBelowMinArea},
           {"area_share_below_min_area", stats.areaShareBelowMinArea},

@@ -66,7 +66,8 @@ TEST(ExitCodes, ACommandLineThatDoesNotParseIsTwoWithOneLine) {
       {"", "bake", "particles " + kPhoto + out + " --size abc",
        "particles " + kPhoto + " --no-such-option" + out, "particles " + kPhoto,
        "particles " + kPhoto + out + " --size 1", "particles " + kPhoto + out + " --placer nearest",
-       "particles " + kPhoto + out + " --threads -3", "synthesize " + kPhoto + out + " --method none",
+       "particles " + kPhoto + out + " --threads -3", "particles " + kPhoto + out + " --outlines sharp",
+       "analyze " + kPhoto + " --outlines sharp", "synthesize " + kPhoto + out + " --method none",
        "synthesize " + kPhoto + out + " --similarity-search fast",
        "synthesize2d " + kPhoto + " -o " + shellWord(dir / "a.png") + " --method none"},
       2, dir);

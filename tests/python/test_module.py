@@ -23,6 +23,13 @@ def cli(*arguments, **kwargs):
     return subprocess.run([CLI, *arguments], capture_output=True, text=True, **kwargs)
 
 
+def same_analysis(test, a, b):
+    """Two analyze() results agree: their reports and their label images."""
+    a, b = dict(a), dict(b)
+    np.testing.assert_array_equal(a.pop("particle_labels"), b.pop("particle_labels"))
+    test.assertEqual(a, b)
+
+
 def discs_photo():
     """An RGB uint8 photo made in memory: 30 dark discs of radius 5 to 8 on a light, grainy ground."""
     rng = np.random.default_rng(4)
@@ -83,17 +90,28 @@ class InMemoryTest(unittest.TestCase):
     def test_grey_and_float_images_read_as_their_rgb_uint8_form(self):
         grey = self.photo[:, :, 0]
         as_rgb = solidtex.analyze(np.repeat(grey[:, :, None], 3, axis=2))
-        self.assertEqual(solidtex.analyze(grey), as_rgb)
+        same_analysis(self, solidtex.analyze(grey), as_rgb)
         as_float = solidtex.analyze(self.photo.astype(np.float64) / 255)
         self.assertEqual(as_float["particle_count"], solidtex.analyze(self.photo)["particle_count"])
+
+    def test_the_label_image_holds_each_particle_with_its_reported_area(self):
+        analysis = solidtex.analyze(self.photo)
+        labels = analysis["particle_labels"]
+        self.assertEqual((labels.shape, labels.dtype), ((150, 150), np.int32))
+        areas = np.bincount(labels.ravel(), minlength=analysis["particle_count"] + 1)
+        self.assertEqual(len(areas), analysis["particle_count"] + 1)
+        for particle in analysis["particles"]:
+            self.assertEqual(areas[particle["id"]], particle["area"])
+        dark = self.photo[:, :, 0] < 128
+        self.assertGreater(np.mean((labels > 0) == dark), 0.99)
 
     def test_a_mask_array_reads_as_the_same_mask_saved_as_png(self):
         dark = self.photo[:, :, 0] < 128
         png = os.path.join(self.folder.name, "mask.png")
         Image.fromarray(np.where(dark, 255, 0).astype(np.uint8)).save(png)
         from_file = solidtex.analyze(self.photo, mask=png)
-        self.assertEqual(solidtex.analyze(self.photo, mask=dark), from_file)
-        self.assertEqual(solidtex.analyze(self.photo, mask=np.where(dark, 1.0, 0.0)), from_file)
+        same_analysis(self, solidtex.analyze(self.photo, mask=dark), from_file)
+        same_analysis(self, solidtex.analyze(self.photo, mask=np.where(dark, 1.0, 0.0)), from_file)
         self.assertGreaterEqual(from_file["particle_count"], 25)
         with self.assertRaises(solidtex.Error) as error:
             solidtex.analyze(self.photo, mask=dark[:100])
