@@ -37,21 +37,21 @@ PY
 
 echo "Solids ${size}^3, seed 1. Left: default (--outlines auto); right: --outlines watershed."
 echo
-echo "| truth | outline blur (px) | outlines | KS | volume W1/mean | solidity KS | roundness KS |" \
+echo "| truth | seed | outline blur (px) | outlines | KS | volume W1/mean | solidity KS | roundness KS |" \
      "outlines | KS | volume W1/mean | solidity KS | roundness KS |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for truth in "${truths[@]}"; do
   name=${truth%%|*}
   read -r -a options <<< "${truth#*|}"
   "$bin" truth -o "$out/t" "${options[@]}" > /dev/null
-  row="| $name"
+  row="| $name | ${options[-1]}"
   for outlines in auto watershed; do
     "$bin" particles "$out/t/photo.png" -o "$out/$outlines.vdb" --size "$size" --outlines "$outlines" \
       --report "$out/$outlines.particles.json" --quiet > /dev/null
     "$bin" compare "$out/t/photo.png" "$out/$outlines.vdb" --truth "$out/t/truth.vdb" --outlines "$outlines" \
       --measures none --report "$out/$outlines.json" > /dev/null
     if [ "$outlines" = auto ]; then
-      row+=" | $(python3 -c 'import json, sys; print(f"{json.load(open(sys.argv[1]))["photo"]["outline_blur"]:.2f}")' \
+      row+=" | $(python3 -c 'import json, sys; print("%.2f" % json.load(open(sys.argv[1]))["photo"]["outline_blur"])' \
         "$out/auto.particles.json")"
     fi
     row+=" | $(cells "$out/$outlines.json" "$out/$outlines.particles.json")"
