@@ -40,7 +40,6 @@
 #include "synthesis/FrameField.h"
 #include "synthesis/synthesizeFromVolume.h"
 #include "synthesis/synthesizeSolid.h"
-#include "validation/compareSections.h"
 #include "validation/continuousQuality.h"
 
 namespace py = pybind11;
@@ -224,7 +223,8 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
     }
     const ExemplarStats stats = analyzeExemplar(image, name, options);
     report = toJson(stats);
-    const cv::Mat labelImage = photoLabels(stats, 1.0);
+    cv::Mat labelImage = cv::Mat::zeros(image.rows, image.cols, CV_32S);
+    for (const Particle2D& p : stats.particles) labelImage(p.box).setTo(p.id, p.mask);
     particleLabels.assign(labelImage.begin<std::int32_t>(), labelImage.end<std::int32_t>());
     if (!outputs) return;
     if (labels)

@@ -48,8 +48,8 @@ struct ExemplarStats {
   cv::Mat backgroundMask;      ///< CV_8U, image-sized, 255 on background pixels
   cv::Mat backgroundResidual;  ///< CV_32FC3, image-sized, linear colour minus background mean, 0 on particles
   double areaFraction = 0;     ///< particle pixels / all pixels ("crowdedness")
-  double outlineBlur =
-      0;  ///< pixels: sigma of the Gaussian blur the outlines look blurred by (0: mask given)
+  double outlineBlur = 0;      ///< pixels: sigma of the Gaussian blur the outlines look blurred by (0: a mask
+                               ///< given, or no outline with contrast)
   bool halfMaximumOutlines = false;  ///< outlines drawn half-way up their edges (OutlineMethod)
   double minArea = 0;  ///< pixels; smaller particles were dropped as noise (apply the same to sections)
   int regionsBelowMinArea = 0;       ///< regions (touching ones split) of 4 pixels or more dropped as smaller

@@ -8,7 +8,6 @@
 
 namespace solidtex {
 
-/// How the photo is split into particles and background.
 /// How the automatic separation draws the particles' outlines.
 enum class OutlineMethod {
   Auto,         ///< half-maximum when the photo's outlines look blurred (kBlurredOutline), else watershed
@@ -23,6 +22,7 @@ OutlineMethod parseOutlineMethod(const std::string& name);
 /// at half maximum.
 inline constexpr double kBlurredOutline = 1.0;
 
+/// How the photo is split into particles and background.
 struct SegmentationOptions {
   cv::Mat mask;  ///< CV_8U of the photo's size, non-zero = particle; replaces the automatic separation
   std::optional<std::string> maskPath;  ///< read with maskFromImage when `mask` is empty

@@ -20,8 +20,8 @@ constexpr float kMinContrast = 5.0f;  // Delta E between the levels: below it, n
 constexpr double kQuartileWidth = 1.349;
 constexpr int kSamples = int(2 * kReach / kStep) + 1;
 
-// Photos are at least two pixels on a side (kMinPhotoSide), so every pixel has a right and a lower
-// neighbour to interpolate with once clamped.
+// The image is at least two pixels on a side (measureOutlineBlur checks), so every pixel has a
+// right and a lower neighbour to interpolate with once clamped.
 float bilinear(const cv::Mat& image, float x, float y) {
   x = std::clamp(x, 0.f, float(image.cols - 1));
   y = std::clamp(y, 0.f, float(image.rows - 1));
@@ -92,6 +92,7 @@ cv::Mat distanceFromBackground(const cv::Mat& lab, const cv::Mat& backgroundMask
 }
 
 double measureOutlineBlur(const cv::Mat& distance, const cv::Mat& particles) {
+  CV_Assert(distance.rows >= 2 && distance.cols >= 2);
   CV_Assert(distance.type() == CV_32FC1 && particles.type() == CV_8UC1 &&
             distance.size() == particles.size());
   // The outline's normal from a softened mask: smooth where the pixel outline is a staircase.
