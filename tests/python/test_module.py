@@ -105,6 +105,12 @@ class InMemoryTest(unittest.TestCase):
         dark = self.photo[:, :, 0] < 128
         self.assertGreater(np.mean((labels > 0) == dark), 0.99)
 
+    def test_outlines_are_the_command_lines(self):
+        sharp = solidtex.analyze(self.photo)
+        self.assertEqual(sharp["outlines"], "watershed")
+        self.assertLess(sharp["outline_blur"], 1.0)
+        self.assertEqual(solidtex.analyze(self.photo, outlines="half-maximum")["outlines"], "half-maximum")
+
     def test_a_mask_array_reads_as_the_same_mask_saved_as_png(self):
         dark = self.photo[:, :, 0] < 128
         png = os.path.join(self.folder.name, "mask.png")
@@ -204,7 +210,7 @@ class KeywordsTest(unittest.TestCase):
     def test_a_value_out_of_range_is_a_value_error_naming_the_keyword_not_a_flag(self):
         for keywords, name in [({"views": 7}, "views"), ({"scale": 100.0}, "scale"),
                                ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer"),
-                               ({"seed": -1}, "seed")]:
+                               ({"seed": -1}, "seed"), ({"outlines": "sharp"}, "outlines")]:
             with self.assertRaises(ValueError) as error:
                 solidtex.particles(COINS, size=16, **keywords)
             self.assertIn(name, str(error.exception))
