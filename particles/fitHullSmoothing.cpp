@@ -15,8 +15,8 @@ namespace solidtex {
 namespace {
 
 constexpr double kMinShapeArea = 20;  // samples: smaller sections are too coarse to have a shape
-constexpr int kHullsTried = 16;       // of the pool, smoothed per candidate
-constexpr int kShapesPerCandidate = 64;
+constexpr int kHullsTried = 48;       // of the pool, smoothed per candidate
+constexpr int kShapesPerCandidate = 96;
 constexpr int kPlanesPerShape = 8;
 constexpr std::uint64_t kFitStream = 0x736d6f6f;  // "smoo"
 
@@ -87,7 +87,7 @@ std::optional<double> parseSmoothing(const std::string& text) {
   return radius;
 }
 
-std::vector<double> smoothingCandidates() { return {0, 0.04, 0.08, 0.12, 0.16, 0.2}; }
+std::vector<double> smoothingCandidates() { return {0, 0.02, 0.04, 0.06, 0.08, 0.1, 0.12, 0.16, 0.2}; }
 
 SmoothingFit fitHullSmoothing(const ExemplarStats& stats, const ParticleFactory& factory,
                               double voxelsPerPixel, double sizeFactor, std::uint64_t seed) {

@@ -8,7 +8,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 source scripts/compilerCache.sh
-tbb=$PWD/build-tsan/tbb
+# Built once per machine and version, outside the checkout: CI's clean clone reuses it.
+version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
+tbb=${XDG_CACHE_HOME:-$HOME/.cache}/solidtex/tbb-tsan-$version
 if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   rm -rf "$tbb" && mkdir -p "$tbb/lists/partial" "$tbb/cache/archives/partial"
   # Debian's source archive through a private list, leaving the system's apt sources untouched.
@@ -16,7 +18,6 @@ if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   apt_src=(-qq -o Dir::Etc::SourceList="$tbb/sources.list" -o Dir::Etc::SourceParts=/dev/null
     -o Dir::State::Lists="$tbb/lists" -o Dir::Cache="$tbb/cache" -o APT::Sandbox::User=root)
   apt-get "${apt_src[@]}" update
-  version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
   (cd "$tbb" && apt-get "${apt_src[@]}" source --download-only "onetbb=$version")
   tar -C "$tbb" -xf "$(ls "$tbb"/onetbb_*.orig.tar.* | grep -v '\.asc$' | head -1)"
   cmake -S "$(ls -d "$tbb"/oneTBB-*/)" -B "$tbb/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTBB_TEST=OFF \

@@ -94,28 +94,36 @@ struct ParticleMask {
   bool halfMaximum = false;
 };
 
-// Outlines redrawn half-way up their edges when asked, or by default when they look blurred.
+// Outlines redrawn half-way up their edges when asked, or by default when they look blurred;
+// otherwise the corners the segmentation's median rounded are put back.
 void drawOutlines(ParticleMask& particles, const cv::Mat& linear, const SegmentationOptions& options,
                   double minArea) {
   namespace detail = segmentation::detail;
   const cv::Mat background = particles.mask == 0;
   if (cv::countNonZero(particles.mask) == 0 || cv::countNonZero(background) == 0) return;
   const cv::Mat lab = detail::linearToLab(linear);
-  particles.outlineBlur =
-      detail::measureOutlineBlur(detail::distanceFromBackground(lab, background), particles.mask);
+  const cv::Mat distance = detail::colourDistance(lab, background);
+  cv::Mat denoised;
+  cv::medianBlur(distance, denoised, 3);
+  particles.outlineBlur = detail::measureOutlineBlur(denoised, particles.mask);
   particles.halfMaximum =
       particles.outlineBlur > 0 &&
       (options.outlines == OutlineMethod::HalfMaximum ||
        (options.outlines == OutlineMethod::Auto && particles.outlineBlur >= kBlurredOutline));
-  if (!particles.halfMaximum) return;
-  const double plainBackground =
-      options.outlines == OutlineMethod::Auto ? kPlainBackground : std::numeric_limits<double>::infinity();
-  cv::Mat outlined = detail::halfMaximumOutlines(lab, particles.mask, particles.outlineBlur, plainBackground);
-  particles.halfMaximum = !outlined.empty();
-  if (!particles.halfMaximum) return;
-  particles.mask = std::move(outlined);
-  detail::removeSmallComponents(particles.mask, minArea);
-  detail::fillSmallHoles(particles.mask, minArea);
+  if (particles.halfMaximum) {
+    const double plainBackground =
+        options.outlines == OutlineMethod::Auto ? kPlainBackground : std::numeric_limits<double>::infinity();
+    cv::Mat outlined =
+        detail::halfMaximumOutlines(lab, particles.mask, particles.outlineBlur, plainBackground);
+    particles.halfMaximum = !outlined.empty();
+    if (particles.halfMaximum) {
+      particles.mask = std::move(outlined);
+      detail::removeSmallComponents(particles.mask, minArea);
+      detail::fillSmallHoles(particles.mask, minArea);
+      return;
+    }
+  }
+  detail::restoreCorners(particles.mask, detail::crossMedian(distance));
 }
 
 ParticleMask particleMask(const cv::Mat& linear, const SegmentationOptions& options, double minArea) {

@@ -79,7 +79,7 @@ float quartileWidth(const cv::Mat& distance, float x, float y, cv::Point2f n) {
 
 }  // namespace
 
-cv::Mat distanceFromBackground(const cv::Mat& lab, const cv::Mat& backgroundMask) {
+cv::Mat colourDistance(const cv::Mat& lab, const cv::Mat& backgroundMask) {
   CV_Assert(lab.type() == CV_32FC3 && backgroundMask.type() == CV_8UC1);
   const cv::Mat flat = flattenShading(lab, backgroundMask);
   cv::Mat diff, distance;
@@ -87,7 +87,12 @@ cv::Mat distanceFromBackground(const cv::Mat& lab, const cv::Mat& backgroundMask
   cv::multiply(diff, diff, diff);
   cv::transform(diff, distance, cv::Matx13f(1, 1, 1));
   cv::sqrt(distance, distance);
-  cv::medianBlur(distance, distance, 3);
+  return distance;
+}
+
+cv::Mat distanceFromBackground(const cv::Mat& lab, const cv::Mat& backgroundMask) {
+  cv::Mat distance;
+  cv::medianBlur(colourDistance(lab, backgroundMask), distance, 3);
   return distance;
 }
 

@@ -5,7 +5,10 @@ namespace solidtex::segmentation::detail {
 
 // The colour distance (CIE76 Delta E, CV_32F) of every pixel of a CV_32FC3 Lab image from the
 // background's mean colour, lighting evened out over the background (CV_8U mask, non-zero on
-// background) and sensor noise taken off by a 3x3 median.
+// background).
+cv::Mat colourDistance(const cv::Mat& lab, const cv::Mat& backgroundMask);
+
+// colourDistance with the sensor noise taken off by a 3x3 median.
 cv::Mat distanceFromBackground(const cv::Mat& lab, const cv::Mat& backgroundMask);
 
 // How blurred the particles' outlines look, in pixels: the standard deviation of the Gaussian blur
