@@ -43,19 +43,17 @@ cv::Mat crossMedian(const cv::Mat& image) {
   CV_Assert(image.type() == CV_32FC1);
   cv::Mat padded, out(image.size(), CV_32FC1);
   cv::copyMakeBorder(image, padded, 1, 1, 1, 1, cv::BORDER_REPLICATE);
-  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const float* above = padded.ptr<float>(y) + 1;
-      const float* row = padded.ptr<float>(y + 1) + 1;
-      const float* below = padded.ptr<float>(y + 2) + 1;
-      float* o = out.ptr<float>(y);
-      for (int x = 0; x < image.cols; ++x) {
-        std::array<float, 5> v{row[x - 1], row[x], row[x + 1], above[x], below[x]};
-        std::nth_element(v.begin(), v.begin() + 2, v.end());
-        o[x] = v[2];
-      }
+  for (int y = 0; y < image.rows; ++y) {
+    const float* above = padded.ptr<float>(y) + 1;
+    const float* row = padded.ptr<float>(y + 1) + 1;
+    const float* below = padded.ptr<float>(y + 2) + 1;
+    float* o = out.ptr<float>(y);
+    for (int x = 0; x < image.cols; ++x) {
+      std::array<float, 5> v{row[x - 1], row[x], row[x + 1], above[x], below[x]};
+      std::nth_element(v.begin(), v.begin() + 2, v.end());
+      o[x] = v[2];
     }
-  });
+  }
   return out;
 }
 
