@@ -73,10 +73,12 @@ void restoreCorners(cv::Mat& mask, const cv::Mat& distance) {
         sums[in[i]] += distance.at<float>(side[i]);
       }
       if (inside != 2 || in[0] == in[1]) continue;  // a corner has one of each opposite pair inside
+      const double step = (sums[1] - sums[0]) / 2;
+      if (!(step > 0)) continue;  // no edge to read the pixel against
       // Where along the step from the outside pair's mean to the inside pair's: only a pixel that
       // clearly reads as the other side moves, so that a soft edge stays where it was drawn.
-      const double along = (distance.at<float>(y, x) - sums[0] / 2) / (sums[1] / 2 - sums[0] / 2);
-      if (!(std::abs(along - 0.5) > kClearly)) continue;
+      const double along = (distance.at<float>(y, x) - sums[0] / 2) / step;
+      if (std::abs(along - 0.5) <= kClearly) continue;
       mask.at<uchar>(y, x) = along > 0.5 ? 255 : 0;
     }
 }
