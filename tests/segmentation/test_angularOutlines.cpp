@@ -61,6 +61,21 @@ TEST(RestoreCorners, LeavesADiagonalStaircaseAsItsDistanceDrawsIt) {
   EXPECT_EQ(cv::countNonZero(mask != staircase), 0);
 }
 
+TEST(RestoreCorners, MovesNothingWhereTheDistanceShowsNoEdge) {
+  cv::Mat mask = cv::Mat::zeros(32, 32, CV_8UC1);
+  mask(cv::Rect(8, 8, 12, 12)).setTo(255);
+  const cv::Mat drawn = mask.clone();
+  restoreCorners(mask, cv::Mat(32, 32, CV_32FC1, cv::Scalar(7.0f)));
+  EXPECT_EQ(cv::countNonZero(mask != drawn), 0);
+  // Further from the background outside than inside, and the square's corners read as outside:
+  // against a reversed step they would be taken out.
+  cv::Mat reversed = 1 - squareImage();
+  for (const cv::Point corner : {cv::Point(8, 8), cv::Point(19, 8), cv::Point(8, 19), cv::Point(19, 19)})
+    reversed.at<float>(corner) = 1;
+  restoreCorners(mask, reversed);
+  EXPECT_EQ(cv::countNonZero(mask != drawn), 0);
+}
+
 // Axis-aligned squares and rectangles with the truth photos' colours and noise: every pixel of
 // every particle is found, corners included (the square median lost four per particle).
 TEST(AngularOutlines, SquaresKeepEveryCornerPixel) {
