@@ -8,9 +8,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 source scripts/compilerCache.sh
-# Built once per machine and version, outside the checkout: CI's clean clone reuses it.
+# Built once per machine and version, outside the checkout, so that a clean clone on the same
+# machine (CI's, after a session) reuses it; a lock keeps two runs from building it at once.
 version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
-tbb=${XDG_CACHE_HOME:-$HOME/.cache}/solidtex/tbb-tsan-$version
+tbb=${XDG_CACHE_HOME:-$HOME/.cache}/solidtex/tbb-tsan-${version//:/_}
+mkdir -p "$(dirname "$tbb")"
+exec 9>"$tbb.lock"
+flock 9
 if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   rm -rf "$tbb" && mkdir -p "$tbb/lists/partial" "$tbb/cache/archives/partial"
   # Debian's source archive through a private list, leaving the system's apt sources untouched.
@@ -25,6 +29,7 @@ if [ ! -e "$tbb/install/lib/libtbb.so.12" ]; then
   cmake --build "$tbb/build" -j"$(nproc)"
   cmake --install "$tbb/build" >/dev/null
 fi
+exec 9>&-
 cmake "${compiler_cache[@]}" -S . -B build-tsan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
   -DSOLIDTEX_TESTS=ON -DSOLIDTEX_STRICT=OFF -DSOLIDTEX_SANITIZE=thread
 cmake --build build-tsan -j"$(nproc)" --target test_placement test_synthesis

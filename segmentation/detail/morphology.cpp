@@ -78,7 +78,7 @@ void restoreCorners(cv::Mat& mask, const cv::Mat& distance) {
       // Where along the step from the outside pair's mean to the inside pair's: only a pixel that
       // clearly reads as the other side moves, so that a soft edge stays where it was drawn.
       const double along = (distance.at<float>(y, x) - sums[0] / 2) / step;
-      if (std::abs(along - 0.5) <= kClearly) continue;
+      if (!(std::abs(along - 0.5) > kClearly)) continue;  // NaN too: no reading
       mask.at<uchar>(y, x) = along > 0.5 ? 255 : 0;
     }
 }

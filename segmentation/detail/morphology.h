@@ -15,10 +15,11 @@ cv::Mat crossMedian(const cv::Mat& image);
 
 // Puts back the corner pixels a 3x3 median moved across the outlines of `mask` (CV_8U, non-zero
 // inside): a right-angled tip has four of its nine inside, so that median rounds every corner of
-// an angular particle by a pixel, and fills a notch the same way. A pixel with two perpendicular
-// edge neighbours inside and two outside joins the pair whose mean `distance` (CV_32F, the colour
-// distance from the background, larger inside) its own lies within a quarter of the step between
-// the two means of; a pixel half-way up a soft edge stays as it is.
+// an angular particle by a pixel, and fills a notch the same way. Every pixel with two
+// perpendicular edge neighbours inside and two outside (every step of a diagonal edge too) joins
+// the pair whose mean `distance` (CV_32F, the colour distance from the background, larger inside)
+// its own lies within a quarter of the step between the two means of; a pixel half-way up a soft
+// edge stays as it is, and so does one where the distance does not rise inwards.
 void restoreCorners(cv::Mat& mask, const cv::Mat& distance);
 
 }  // namespace solidtex::segmentation::detail

@@ -108,7 +108,8 @@ cv::Mat backgroundDistance(const cv::Mat& lab, const Axis& axis, const cv::Mat& 
   cv::multiply(diff, diff, diff);
   cv::transform(diff, distance, cv::Matx13f(1, 1, 1));
   cv::sqrt(distance, distance);
-  // A 3x3 median removes sensor noise without moving edges or erasing thin spots.
+  // A 3x3 median removes sensor noise without moving straight edges or erasing thin spots; it
+  // rounds corners, which analyzeExemplar's outlines put back (restoreCorners).
   cv::medianBlur(distance, distance, 3);
   return distance;
 }
