@@ -16,8 +16,10 @@ Action addTruthCommand(CLI::App& app) {
       "truth",
       "Make a test photo with a known 3D truth: random non-overlapping particles (ellipsoids, "
       "superellipsoids or polytopes), small ones orange, large ones blue, and their middle section as the "
-      "photo");
-  command->add_option("-o,--output", job->folder, "Folder for photo.png, truth.vdb and truth.json")
+      "photo (photo.png: the xy plane; photo_xz.png and photo_yz.png: the others, z down)");
+  command
+      ->add_option("-o,--output", job->folder,
+                   "Folder for photo.png, photo_xz.png, photo_yz.png, truth.vdb and truth.json")
       ->required();
   command->add_option("--dims", *dims, "Volume edges X Y Z in voxels (periodic; the photo is X x Y)")
       ->expected(3)
@@ -46,6 +48,11 @@ Action addTruthCommand(CLI::App& app) {
       ->add_option("--flatten", t.flatten,
                    "Ratio of the smallest axis to the others, volume kept (1 = none; 0.5 = oblate 2:1)")
       ->capture_default_str();
+  command
+      ->add_option("--anisotropy", t.anisotropy,
+                   "Aligned particles: their x, y, z semi-axes in these proportions (e.g. 3 1.5 1; volume "
+                   "kept), not turned at random")
+      ->expected(3);
   command->add_option("--exponent", t.exponent, "Superellipsoid exponent p (2 = ellipsoid; larger = boxier)")
       ->capture_default_str();
   command

@@ -11,12 +11,20 @@
 namespace solidtex {
 namespace {
 
-double sectionAreaFraction(const SolidVolume& volume) {
+// The particle share of the middle section across `plane` (the axis it holds fixed).
+double sectionAreaFraction(const SolidVolume& volume, int plane) {
   const Dims& d = volume.dims;
-  std::size_t filled = 0;
-  for (int j = 0; j < d.y; ++j)
-    for (int i = 0; i < d.x; ++i) filled += volume.particleId[d.index(i, j, d.z / 2)] > 0;
-  return double(filled) / (double(d.x) * double(d.y));
+  const int edges[3] = {d.x, d.y, d.z};
+  std::size_t filled = 0, all = 0;
+  for (int z = 0; z < d.z; ++z)
+    for (int y = 0; y < d.y; ++y)
+      for (int x = 0; x < d.x; ++x) {
+        const int at[3] = {x, y, z};
+        if (at[plane] != edges[plane] / 2) continue;
+        filled += volume.particleId[d.index(x, y, z)] > 0;
+        ++all;
+      }
+  return double(filled) / double(all);
 }
 
 nlohmann::json optionsJson(const ParticleTruthOptions& options) {
@@ -32,7 +40,9 @@ nlohmann::json optionsJson(const ParticleTruthOptions& options) {
           {"flatten", options.flatten},
           {"exponent", options.exponent},
           {"blur", options.blur},
-          {"noise", options.noise}};
+          {"noise", options.noise},
+          {"anisotropy",
+           options.anisotropy.empty() ? nlohmann::json(nullptr) : nlohmann::json(options.anisotropy)}};
 }
 
 }  // namespace
@@ -56,12 +66,18 @@ nlohmann::json runTruth(const TruthJob& job) {
       {"particles", truth.classOf.size()},
       {"particles_per_class", perClass},
       {"volume_fraction", truth.volumeFraction},
-      {"photo_area_fraction", sectionAreaFraction(truth.volume)},
+      {"photo_area_fraction", sectionAreaFraction(truth.volume, 2)},
+      {"photo_xz_area_fraction", sectionAreaFraction(truth.volume, 1)},
+      {"photo_yz_area_fraction", sectionAreaFraction(truth.volume, 0)},
       {"volumes", truth.volumes},
   };
   const std::filesystem::path folder(job.folder);
   outputs.write((folder / "photo.png").string(),
                 [&](const std::string& path) { writeImage(path, truth.photo); });
+  outputs.write((folder / "photo_xz.png").string(),
+                [&](const std::string& path) { writeImage(path, truth.photoXz); });
+  outputs.write((folder / "photo_yz.png").string(),
+                [&](const std::string& path) { writeImage(path, truth.photoYz); });
   truth.volume.metadata["exemplar"] = "photo.png";
   truth.volume.metadata["seed"] = std::to_string(job.truth.seed);
   outputs.write((folder / "truth.vdb").string(),

@@ -29,6 +29,13 @@ struct Particle {
   double volume() const { return kUnitSphereVolume * semiAxes.prod(); }
 };
 
+// The anisotropy's proportions at unit volume (all ones for an isotropic truth).
+Eigen::Vector3d alignedProportions(const ParticleTruthOptions& options) {
+  if (options.anisotropy.empty()) return Eigen::Vector3d::Ones();
+  const Eigen::Vector3d a(options.anisotropy[0], options.anisotropy[1], options.anisotropy[2]);
+  return a / std::cbrt(a.prod());
+}
+
 // Centred log stretches, then the smallest axis flattened against the other two: it times
 // flatten^(2/3), they times flatten^(-1/3), so their ratio changes by flatten and the volume not.
 Eigen::Vector3d axisStretches(const ParticleTruthOptions& options, Rng& rng) {
@@ -40,7 +47,7 @@ Eigen::Vector3d axisStretches(const ParticleTruthOptions& options, Rng& rng) {
   const double logFlatten = std::log(options.flatten);
   logs.array() -= logFlatten / 3;
   logs[smallest] += logFlatten;
-  return logs.array().exp();
+  return logs.array().exp() * alignedProportions(options).array();
 }
 
 // The sizes to place: drawn until their volumes fill the asked fraction, largest first.
@@ -181,7 +188,7 @@ struct Footprint {
 // keeps others from touching it. Centred on voxel centres, every particle would be digitized
 // symmetrically, and its sections would look more regular than any solid's or photo's.
 Footprint footprintOf(const Particle& p, const ParticleTruthOptions& options, Rng& rng) {
-  const Eigen::Matrix3d r = randomRotation(rng);
+  const Eigen::Matrix3d r = options.anisotropy.empty() ? randomRotation(rng) : Eigen::Matrix3d::Identity();
   const UnitShape shape = unitShapeOf(options, rng);
   const Eigen::Matrix3d toUnit = p.semiAxes.cwiseInverse().asDiagonal() * r.transpose();
   const Eigen::Vector3d offset(uniform01(rng) - 0.5, uniform01(rng) - 0.5, uniform01(rng) - 0.5);
@@ -218,15 +225,22 @@ bool isFree(const std::vector<std::int32_t>& ids, const Dims& dims, const Voxel&
                       [&](const Voxel& o) { return ids[wrappedIndex(dims, centre, o)] != 0; });
 }
 
-cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& options, Rng& rng) {
+// The middle section across `plane` (the axis it holds fixed: 2 for xy, 1 for xz, 0 for yz), its
+// first free axis across and the second down.
+cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& options, int plane, Rng& rng) {
   const Dims& dims = truth.volume.dims;
   std::vector<float> shade(truth.classOf.size());
   for (float& s : shade) s = float(1 + 0.12 * (uniform01(rng) - 0.5));
-  cv::Mat photo(dims.y, dims.x, CV_32FC3);
-  const int z = dims.z / 2;
-  for (int j = 0; j < dims.y; ++j)
-    for (int i = 0; i < dims.x; ++i) {
-      const std::int32_t id = truth.volume.particleId[dims.index(i, j, z)];
+  const int edges[3] = {dims.x, dims.y, dims.z};
+  const int across = plane == 0 ? 1 : 0, down = plane == 2 ? 1 : 2;
+  cv::Mat photo(edges[down], edges[across], CV_32FC3);
+  for (int j = 0; j < photo.rows; ++j)
+    for (int i = 0; i < photo.cols; ++i) {
+      int at[3];
+      at[plane] = edges[plane] / 2;
+      at[across] = i;
+      at[down] = j;
+      const std::int32_t id = truth.volume.particleId[dims.index(at[0], at[1], at[2])];
       photo.at<cv::Vec3f>(j, i) =
           id > 0 ? options.classes[std::size_t(truth.classOf[std::size_t(id - 1)])].srgb *
                        shade[std::size_t(id - 1)]
@@ -234,8 +248,8 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
     }
   // A lens blurs what it sees and the sensor then adds its noise, so the noise stays sharp.
   if (options.blur > 0) cv::GaussianBlur(photo, photo, cv::Size(), options.blur, options.blur);
-  for (int j = 0; j < dims.y; ++j)
-    for (int i = 0; i < dims.x; ++i) {
+  for (int j = 0; j < photo.rows; ++j)
+    for (int i = 0; i < photo.cols; ++i) {
       cv::Vec3f& c = photo.at<cv::Vec3f>(j, i);
       for (int ch = 0; ch < 3; ++ch)
         c[ch] = std::clamp(float(c[ch] + options.noise * standardNormal(rng)), 0.f, 1.f);
@@ -250,15 +264,23 @@ void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) 
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the
   // other axes by flatten^(-1/3). A periodic volume must hold the longest particle with room to
   // spare, or it would touch its own image.
+  // Turned at random, any axis may lie along the shortest edge; aligned, each axis has its own.
   const double longest = 2 * c.meanRadius * std::exp(2 * c.radiusSpread) *
                          std::pow(options.elongation, 4.0 / 3.0) / std::cbrt(options.flatten) *
                          largestReach(options);
-  const int edge = std::min({options.dims.x, options.dims.y, options.dims.z});
-  if (longest + 4 > edge)
-    throw OptionError("the largest " + std::string(truthShapeName(options.shape)) + "s (" +
-                      std::to_string(int(std::ceil(longest))) +
-                      " voxels across) do not fit the smallest of --dims (" + std::to_string(edge) +
-                      "): lower --small-radius, --large-radius, --spread or --elongation, or raise --dims");
+  const Eigen::Vector3d along = alignedProportions(options) * longest;
+  const int edges[3] = {options.dims.x, options.dims.y, options.dims.z};
+  for (int a = 0; a < 3; ++a) {
+    const double across = options.anisotropy.empty() ? longest : along[a];
+    const int edge = options.anisotropy.empty() ? std::min({edges[0], edges[1], edges[2]}) : edges[a];
+    if (across + 4 > edge)
+      throw OptionError("the largest " + std::string(truthShapeName(options.shape)) + "s (" +
+                        std::to_string(int(std::ceil(across))) + " voxels across) do not fit " +
+                        (options.anisotropy.empty() ? "the smallest of --dims ("
+                                                    : "--dims along " + std::string(1, "xyz"[a]) + " (") +
+                        std::to_string(edge) +
+                        "): lower --small-radius, --large-radius, --spread or --elongation, or raise --dims");
+  }
 }
 
 // Each limit names the command line's option, as the library's users see the same words in its docs.
@@ -285,6 +307,14 @@ void validate(const ParticleTruthOptions& options) {
   checkRange("--flatten", options.flatten, 0.2, 1);
   // Below 1 the shape is no longer convex; far above 16 it is a box with voxel-sharp edges.
   checkRange("--exponent", options.exponent, 1, 16);
+  if (!options.anisotropy.empty()) {
+    if (options.anisotropy.size() != 3) throw OptionError("--anisotropy takes three proportions: x y z");
+    for (double a : options.anisotropy) checkRange("--anisotropy", a, 0, 1e3, true);
+    const auto [least, most] = std::minmax_element(options.anisotropy.begin(), options.anisotropy.end());
+    // Beyond 1:10 a small particle is a voxel or two thick along its shortest axis.
+    if (*most > 10 * *least)
+      throw OptionError("--anisotropy: the largest proportion may be at most 10 times the smallest");
+  }
   for (const ParticleClass& c : options.classes) validateClass(c, options);
 }
 
@@ -348,7 +378,9 @@ ParticleTruth makeParticleTruth(const ParticleTruthOptions& options) {
   }
   truth.volume.metadata["voxels_per_pixel"] = "1";
   truth.volume.metadata["volume_fraction"] = std::to_string(truth.volumeFraction);
-  truth.photo = renderSection(truth, options, rng);
+  truth.photo = renderSection(truth, options, 2, rng);
+  truth.photoXz = renderSection(truth, options, 1, rng);
+  truth.photoYz = renderSection(truth, options, 0, rng);
   return truth;
 }
 

@@ -42,6 +42,10 @@ struct ParticleTruthOptions {
       1.25;  ///< stretch of the semi-axes: their logs uniform in [-ln e, ln e], centred so the product is 1
   double flatten = 1;   ///< the smallest semi-axis over the other two shrinks by this factor, volume kept
   double exponent = 4;  ///< superellipsoid exponent p (2 is the ellipsoid)
+  /// Empty: every particle turned at random (an isotropic material). Otherwise its x, y, z semi-axes
+  /// in these proportions (volume kept), times the random stretches, and no rotation: aligned
+  /// particles, whose sections differ by plane.
+  std::vector<double> anisotropy;
   cv::Vec3f backgroundSrgb{0.16f, 0.16f, 0.17f};
   double blur = 0;      ///< standard deviation of the photo's Gaussian blur, pixels, applied before the noise
   double noise = 0.02;  ///< standard deviation of the photo's pixel noise (sRGB)
@@ -54,13 +58,16 @@ struct ParticleTruth {
   std::vector<int> classOf;  ///< class index per particle id - 1
   std::vector<double> volumes;  ///< voxels per particle id - 1 (photo pixels cubed)
   double volumeFraction = 0;
-  cv::Mat photo;  ///< CV_32FC3 sRGB, the section z = dims.z / 2
+  cv::Mat photo;    ///< CV_32FC3 sRGB, the section z = dims.z / 2 (x across, y down)
+  cv::Mat photoXz;  ///< the section y = dims.y / 2: x across, z down
+  cv::Mat photoYz;  ///< the section x = dims.x / 2: y across, z down
 };
 
 /// Random non-overlapping particles (random sequential addition, largest first, each drawn size
 /// placed at the first of many random spots where it neither overlaps nor touches another; sizes
 /// that find none are left out) and one axis section rendered as the photo: each class in its
-/// own colour on a plain background, with a little shading, blur and noise as a camera would add.
+/// own colour on a plain background, with a little shading, blur and noise as a camera would add;
+/// the other two middle sections rendered alike, after it, so that the photo does not depend on them.
 /// Particles never touch, not even diagonally, so the photo's particles are its sections.
 ParticleTruth makeParticleTruth(const ParticleTruthOptions& options);
 

@@ -195,6 +195,8 @@ TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
       {"truth -o OUT/t --dims 64 64 16 --flatten 0.01", "--flatten"},
       {"truth -o OUT/t --dims 64 64 16 --blur -1", "--blur"},
       {"truth -o OUT/t --dims 64 64 16 --noise -1", "--noise"},
+      {"truth -o OUT/t --dims 64 64 16 --anisotropy 3 1 0", "--anisotropy"},
+      {"truth -o OUT/t --dims 64 64 16 --anisotropy 30 1 1", "--anisotropy"},
       {"truth -o OUT/t --dims 64 64 16 --small-radius 0", "--small-radius"},
       {"truth -o OUT/t --dims 64 64 16 --large-radius 40", "--large-radius"},
       {"truth -o OUT/t --dims 64 64 1", "--dims"},

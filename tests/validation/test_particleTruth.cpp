@@ -111,9 +111,11 @@ double chordShareInside(const std::vector<Eigen::Vector3d>& voxels, Rng& rng) {
 
 // Made once per test run: the tests only vary these options.
 const ParticleTruth& truthOf(const ParticleTruthOptions& options) {
-  static std::map<std::tuple<TruthShape, double, double, std::size_t>, std::unique_ptr<ParticleTruth>> made;
+  static std::map<std::tuple<TruthShape, double, double, std::size_t, std::vector<double>>,
+                  std::unique_ptr<ParticleTruth>>
+      made;
   std::unique_ptr<ParticleTruth>& truth =
-      made[{options.shape, options.elongation, options.flatten, options.classes.size()}];
+      made[{options.shape, options.elongation, options.flatten, options.classes.size(), options.anisotropy}];
   if (!truth) truth = std::make_unique<ParticleTruth>(makeParticleTruth(options));
   return *truth;
 }
@@ -199,6 +201,50 @@ TEST(ParticleTruth, FlattenSetsTheAxisRatio) {
   EXPECT_NEAR(t.volumeFraction, 0.2, 0.02);
 }
 
+// Aligned 3 : 1.5 : 1: summed over the particles, the second moments along x, y, z stand as the
+// squared proportions (the random stretches of at most 1.25 average out over ~170 particles), and no
+// particle is turned: its principal axes are the volume's.
+TEST(ParticleTruth, AnisotropyAlignsTheParticles) {
+  ParticleTruthOptions options = shapeTruth(TruthShape::Ellipsoid, 1.25, 1);
+  options.anisotropy = {3, 1.5, 1};
+  const ParticleTruth& t = truthOf(options);
+  Eigen::Vector3d spread = Eigen::Vector3d::Zero();
+  int aligned = 0, all = 0;
+  for (const auto& voxels : particleVoxels(t)) {
+    const Moments m = momentsOf(voxels);
+    for (const Eigen::Vector3d& p : voxels) spread += (p - m.mean).cwiseAbs2();
+    aligned += std::abs(m.axes.col(2).x()) > 0.99;  // the longest axis along x
+    ++all;
+  }
+  ASSERT_GT(all, 100);
+  EXPECT_NEAR(std::sqrt(spread.x() / spread.z()), 3.0, 0.3);
+  EXPECT_NEAR(std::sqrt(spread.y() / spread.z()), 1.5, 0.15);
+  EXPECT_GT(aligned, all * 9 / 10);
+  EXPECT_NEAR(t.volumeFraction, 0.2, 0.02);
+}
+
+// The other two photos are the middle xz and yz sections, z down, in the class colours.
+TEST(ParticleTruth, ThreeSectionsOneForEachPlane) {
+  const ParticleTruthOptions options = smallTruth();
+  const ParticleTruth& t = truthOf(options);
+  const Dims& d = t.volume.dims;
+  ASSERT_EQ(t.photoXz.size(), cv::Size(d.x, d.z));
+  ASSERT_EQ(t.photoYz.size(), cv::Size(d.y, d.z));
+  const auto colourAt = [&](int x, int y, int z) {
+    const std::int32_t id = t.volume.particleId[d.index(x, y, z)];
+    return id > 0 ? options.classes[std::size_t(t.classOf[std::size_t(id - 1)])].srgb
+                  : options.backgroundSrgb;
+  };
+  for (int k = 0; k < d.z; ++k) {
+    for (int i = 0; i < d.x; ++i)
+      ASSERT_LT(cv::norm(t.photoXz.at<cv::Vec3f>(k, i) - colourAt(i, d.y / 2, k), cv::NORM_INF),
+                0.06 + 5 * options.noise);
+    for (int j = 0; j < d.y; ++j)
+      ASSERT_LT(cv::norm(t.photoYz.at<cv::Vec3f>(k, j) - colourAt(d.x / 2, j, k), cv::NORM_INF),
+                0.06 + 5 * options.noise);
+  }
+}
+
 // A superellipsoid of exponent 4 fills about 0.81 of its box, an ellipsoid pi / 6 = 0.52; voxel
 // rounding lowers both.
 TEST(ParticleTruth, SuperellipsoidsAreBoxierThanEllipsoids) {
@@ -278,6 +324,18 @@ TEST(ParticleTruth, RefusesOptionsItCannotMeet) {
       [](ParticleTruthOptions& o) { o.elongation = 5; },
       [](ParticleTruthOptions& o) { o.exponent = 0.5; },
       [](ParticleTruthOptions& o) { o.blur = -1; },
+      [](ParticleTruthOptions& o) {
+        o.anisotropy = {3, 1};
+      },
+      [](ParticleTruthOptions& o) {
+        o.anisotropy = {3, 1, 0};
+      },
+      [](ParticleTruthOptions& o) {
+        o.anisotropy = {12, 1, 1};
+      },
+      [](ParticleTruthOptions& o) {
+        o.anisotropy = {1, 1, 10};
+      },  // the large ones 146 voxels along z, 64 deep
       [](ParticleTruthOptions& o) {
         o.classes = {{1, 0, 1, {1, 1, 1}}}, o.dims = {1000, 1000, 1000};
       },  // 5 x 10^7 particles
