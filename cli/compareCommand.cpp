@@ -72,6 +72,12 @@ Action addCompareCommand(CLI::App& app) {
       ->add_option("--oblique-planes", job->sections.obliquePlanes,
                    "Random oblique section planes (0-100000)")
       ->capture_default_str();
+  auto plane = std::make_shared<std::string>();
+  command
+      ->add_option("--plane", *plane,
+                   "Particles: cut only the axis sections of this plane (xy, xz or yz) and no oblique ones, "
+                   "for the photo of that plane of an anisotropic material")
+      ->check(CLI::IsMember({"xy", "xz", "yz"}));
   command->add_option("--seed", job->sections.seed, "Seed for the planes and patches")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");
   command->add_option("--plot", job->plot,
@@ -108,8 +114,12 @@ Action addCompareCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
   addSegmentationOptions(*command, job->segmentation);
-  return [job, mode, measures] {
+  return [job, mode, measures, plane] {
     job->mode = parseCompareMode(*mode);
+    if (!plane->empty()) {
+      job->sections.planeAxis = planeAxisOf(*plane);
+      job->sections.obliquePlanes = 0;
+    }
     if (!measures->empty()) job->measures = parseMeasureSelection(*measures);
     job->quality.seed = job->sections.seed;
     const auto r = runCompare(*job);

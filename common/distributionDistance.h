@@ -75,6 +75,26 @@ inline double ksStatistic(std::vector<double> a, std::vector<double> b) {
   return gap;
 }
 
+/// Kuiper's two-sample statistic, the KS of values on a circle (angles, directions): the largest
+/// gap of the empirical CDFs one way plus the largest the other way, which does not depend on where
+/// the circle is cut; 1 when either sample is empty.
+inline double kuiperStatistic(std::vector<double> a, std::vector<double> b) {
+  if (a.empty() || b.empty()) return 1;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  std::size_t i = 0, j = 0;
+  double above = 0, below = 0;
+  while (i < a.size() && j < b.size()) {
+    const double x = std::min(a[i], b[j]);
+    while (i < a.size() && a[i] <= x) ++i;
+    while (j < b.size() && b[j] <= x) ++j;
+    const double gap = double(i) / double(a.size()) - double(j) / double(b.size());
+    above = std::max(above, gap);
+    below = std::max(below, -gap);
+  }
+  return above + below;
+}
+
 /// The two-sample KS statistic that samples of n and m values from one distribution exceed with
 /// probability 0.05 (asymptotic: 1.358 sqrt((n + m) / (n m))): a KS below it is no evidence that the
 /// distributions differ. 1 when either sample is empty.

@@ -492,6 +492,10 @@ py::object compare(const py::object& photo, const py::object& solid, const py::k
   job.voxelsPerPixel = keywords.number("scale").value_or(0);
   job.sections.offsetsPerAxis = int(keywords.integer("axis_planes").value_or(job.sections.offsetsPerAxis));
   job.sections.obliquePlanes = int(keywords.integer("oblique_planes").value_or(job.sections.obliquePlanes));
+  if (const auto plane = keywords.text("plane")) {
+    runParsing([&] { job.sections.planeAxis = planeAxisOf(*plane); });
+    job.sections.obliquePlanes = 0;
+  }
   job.sections.seed = job.quality.seed = seedOf(keywords);
   job.truth = keywords.path("truth");
   if (const auto measures = keywords.text("measures"))
@@ -561,7 +565,8 @@ PYBIND11_MODULE(solidtex, m) {
         "Compares a solid with the photo it was made from: the report as a dict. photo as analyze takes; "
         "volume a .vdb path, the dict particles() or synthesize() returns, or an array ((Z, Y, X, 3) "
         "colours or (Z, Y, X) particle ids). Keywords: mode (auto, particles, continuous), reference (a "
-        "second photo), scale, axis_planes, oblique_planes, seed, truth (a .vdb), mask, invert, split, "
+        "second photo), scale, axis_planes, oblique_planes, plane (xy, xz or yz: that plane's axis sections "
+        "only), seed, truth (a .vdb), mask, invert, split, "
         "outlines, min_area; measures (s2, lineal, chord, psd, minkowski, tortuosity, all, none), "
         "max_distance, "
         "measure_planes, phases (K colour classes), phase_mask (an image of the photo's phases).");

@@ -46,6 +46,16 @@ RegionShape measureRegion(const std::vector<cv::Point>& pixels) {
   }
   shape.area = double(pixels.size());
   shape.centroid = sum / shape.area;
+  double xx = 0, yy = 0, xy = 0;
+  for (const cv::Point& p : pixels) {
+    const cv::Point2d d = cv::Point2d(p) - shape.centroid;
+    xx += d.x * d.x, yy += d.y * d.y, xy += d.x * d.y;
+  }
+  // A pixel is a unit square: its own 1/12 per axis keeps a one-pixel line from an aspect of 0.
+  xx = xx / shape.area + 1.0 / 12, yy = yy / shape.area + 1.0 / 12, xy /= shape.area;
+  const double half = 0.5 * (xx + yy), root = std::sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
+  shape.aspect = std::sqrt((half - root) / (half + root));
+  shape.orientation = std::fmod(0.5 * std::atan2(2 * xy, xx - yy) + std::numbers::pi, std::numbers::pi);
   shape.perimeter = croftonPerimeter(mask);
   shape.roundness = 4 * std::numbers::pi * shape.area / (shape.perimeter * shape.perimeter);
 

@@ -21,6 +21,7 @@ SectionSummary summarize(const SectionStatistics& s, const ShapeColumns& columns
   out.shapes = s.shapes.size();
   out.solidity = mean(columns.solidity);
   out.roundness = mean(columns.roundness);
+  out.aspect = mean(columns.aspect);
   out.windows = s.windowFractions.size();
   out.windowSpread = standardDeviation(s.windowFractions);
   out.neighbours = s.neighbourDistances.size();
@@ -38,6 +39,8 @@ SectionComparison compareSections(const SectionStatistics& reference, const Sect
   c.solid = summarize(solid, s, diameter);
   c.solidityKs = ksStatistic(r.solidity, s.solidity);
   c.roundnessKs = ksStatistic(r.roundness, s.roundness);
+  c.aspectKs = ksStatistic(r.aspect, s.aspect);
+  c.orientationKs = kuiperStatistic(r.orientation, s.orientation);
   c.shapeKsCritical = ksCritical95(r.solidity.size(), s.solidity.size());
   c.windowSpreadRatio = c.reference.windowSpread > 0 ? c.solid.windowSpread / c.reference.windowSpread : 0;
   c.neighbourKs = ksStatistic(reference.neighbourDistances, solid.neighbourDistances);

@@ -15,7 +15,7 @@ namespace solidtex {
 /// Means of one side's shape and arrangement measures.
 struct SectionSummary {
   std::size_t shapes = 0;  ///< regions measured for shape
-  double solidity = 0, roundness = 0;
+  double solidity = 0, roundness = 0, aspect = 0;
   std::size_t windows = 0;
   double windowSpread = 0;  ///< standard deviation of the windows' area fractions
   std::size_t neighbours = 0;
@@ -27,6 +27,8 @@ struct SectionSummary {
 struct SectionComparison {
   SectionSummary reference, solid;
   double solidityKs = 1, roundnessKs = 1;
+  double aspectKs = 1;       ///< minor / major axis of the sections
+  double orientationKs = 1;  ///< Kuiper's (circular) KS of the elongated sections' major axes in the plane
   double shapeKsCritical =
       1;  ///< the KS two samples of these sizes from one distribution exceed 1 time in 20
   double windowSpreadRatio = 0;  ///< solid / reference: above 1 is more clustered

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "common/Error.h"
 #include "common/Random.h"
 #include "common/randomDirection.h"
 #include "segmentation/resampleRegions.h"
@@ -122,16 +123,21 @@ SlicePlane steppedAxisPlane(const Dims& dims, int axis, int index, double step) 
   return plane;
 }
 
-// Axis plane i of the 3 x offsetsPerAxis, sampled `step` voxels apart.
+int axisPlaneCount(const SectionOptions& options) {
+  return (options.planeAxis < 0 ? 3 : 1) * options.offsetsPerAxis;
+}
+
+// Axis plane i of the axisPlaneCount, sampled `step` voxels apart.
 SlicePlane axisPlaneNumber(const Dims& dims, const SectionOptions& options, int i, double step) {
   const int extent[3] = {dims.x, dims.y, dims.z};
-  const int axis = i / options.offsetsPerAxis, offset = i % options.offsetsPerAxis;
+  const int axis = options.planeAxis < 0 ? i / options.offsetsPerAxis : options.planeAxis;
+  const int offset = i % options.offsetsPerAxis;
   return steppedAxisPlane(dims, axis, int((offset + 0.5) * extent[axis] / options.offsetsPerAxis), step);
 }
 
 std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& options) {
   std::vector<SlicePlane> planes;
-  for (int i = 0; i < 3 * options.offsetsPerAxis; ++i)
+  for (int i = 0; i < axisPlaneCount(options); ++i)
     planes.push_back(axisPlaneNumber(dims, options, i, options.step));
   Rng rng(deriveSeed(options.seed, 0x5EC7));
   const Eigen::Vector3d centre((dims.x - 1) * 0.5, (dims.y - 1) * 0.5, (dims.z - 1) * 0.5);
@@ -147,10 +153,17 @@ std::vector<SlicePlane> planesFor(const Dims& dims, const SectionOptions& option
 
 }  // namespace
 
+int planeAxisOf(const std::string& plane) {
+  if (plane == "yz") return 0;
+  if (plane == "xz") return 1;
+  if (plane == "xy") return 2;
+  throw OptionError("unknown plane '" + plane + "': use xy, xz or yz");
+}
+
 SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids,
                                  const SectionOptions& options) {
   const std::vector<SlicePlane> planes = planesFor(dims, options);
-  const std::size_t axisPlanes = std::size_t(3 * options.offsetsPerAxis);
+  const auto axisPlanes = std::size_t(axisPlaneCount(options));
   std::vector<ImageMeasures> perPlane(planes.size());
   tbb::parallel_for(std::size_t(0), planes.size(), [&](std::size_t i) {
     const bool axisAligned = i < axisPlanes;

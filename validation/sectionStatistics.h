@@ -3,6 +3,7 @@
 /// Cross-sections of a particle solid on many planes, measured as a photo's particles are.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -14,14 +15,21 @@ namespace solidtex {
 
 /// Which planes cut the volume and what is measured on them.
 struct SectionOptions {
-  int offsetsPerAxis = 16;   ///< evenly spaced axis-aligned planes per axis
-  int obliquePlanes = 32;    ///< random orientations through random points near the centre
+  int offsetsPerAxis = 16;  ///< evenly spaced axis-aligned planes per axis
+  int obliquePlanes = 32;   ///< random orientations through random points near the centre
+  /// -1: every axis; 0, 1, 2: only the planes across x (yz), y (xz) or z (xy), as one plane's photo
+  /// shows an anisotropic material (oblique planes are then still cut if asked for).
+  int planeAxis = -1;
   double minArea = 0;        ///< smaller sections are specks and dropped, as the photo's noise is
   double shapeMinArea = 20;  ///< samples; smaller sections are too coarse for a shape
   int windowSide = 0;        ///< samples per side of the arrangement windows; 0: no arrangement measures
   double step = 1;           ///< voxels between samples: a finer volume cut at a coarser one's resolution
   std::uint64_t seed = 1;
 };
+
+/// The axis a plane named "xy", "xz" or "yz" holds fixed (2, 1, 0), as SectionOptions::planeAxis
+/// takes it; throws OptionError otherwise.
+int planeAxisOf(const std::string& plane);
 
 /// Cross-sections of the particles of an id volume (0 = background) on many planes. Sizes and
 /// positions are in samples (`SectionOptions::step` voxels apart).

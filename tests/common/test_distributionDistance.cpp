@@ -22,6 +22,28 @@ TEST(DistributionDistance, KsIsTheLargestGapBetweenTheCdfs) {
   EXPECT_DOUBLE_EQ(ksStatistic({}, {1}), 1);
 }
 
+// Angles on a circle: Kuiper's statistic does not change with where the circle is cut, where the
+// KS does; it is at least the KS.
+TEST(DistributionDistance, KuiperIsTheKsOfACircle) {
+  Rng rng(3);
+  std::vector<double> a, b;
+  for (int i = 0; i < 200; ++i) {
+    a.push_back(std::fmod(0.1 * standardNormal(rng) + 10, 1.0));  // clustered around the cut at 0
+    b.push_back(uniform01(rng) * 0.3 + 0.35);                     // around 0.5
+  }
+  const auto turned = [](std::vector<double> v, double by) {
+    for (double& x : v) x = std::fmod(x + by, 1.0);
+    return v;
+  };
+  const double v = kuiperStatistic(a, b);
+  EXPECT_NEAR(kuiperStatistic(turned(a, 0.3), turned(b, 0.3)), v, 1e-12);
+  EXPECT_NEAR(kuiperStatistic(turned(a, 0.77), turned(b, 0.77)), v, 1e-12);
+  EXPECT_GT(v, 0.9);
+  EXPECT_GE(v, ksStatistic(a, b));
+  EXPECT_DOUBLE_EQ(kuiperStatistic({0.1, 0.2}, {0.1, 0.2}), 0);
+  EXPECT_DOUBLE_EQ(kuiperStatistic({}, {1}), 1);
+}
+
 TEST(DistributionDistance, W1IsTheAreaBetweenTheCdfs) {
   EXPECT_DOUBLE_EQ(wasserstein1({0, 1}, {0, 1}), 0);
   EXPECT_DOUBLE_EQ(wasserstein1({0, 1}, {2, 3}), 2);  // a shift by 2

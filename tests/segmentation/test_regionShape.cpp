@@ -1,5 +1,6 @@
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,24 @@ TEST(RegionShape, ConcaveRegionsHaveLowSolidity) {
   EXPECT_EQ(s.area, 500);
   EXPECT_NEAR(s.solidity, 441.5 / 641.0, 1e-9);
   EXPECT_LT(s.roundness, 0.6);
+}
+
+// A digital ellipse's second moments are the ellipse's (a^2 / 4 and b^2 / 4) within a pixel's own
+// 1/12: its aspect is b / a and its orientation its turn, on any sub-pixel position; a disc's is 1.
+TEST(RegionShape, AspectAndOrientationOfEllipses) {
+  Rng rng(7);
+  for (const auto& [a, b, angle] : {std::tuple{20.0, 10.0, 0.5}, std::tuple{12.0, 4.0, 2.8},
+                                    std::tuple{9.0, 9.0, 0.0}, std::tuple{30.0, 10.0, 1.5708}}) {
+    const RegionShape s =
+        measureRegion(digitalEllipse(a, b, angle, {uniform01(rng) - 0.5, uniform01(rng) - 0.5}));
+    EXPECT_NEAR(s.aspect, b / a, 0.03) << a << ' ' << b;
+    if (a > b) {
+      EXPECT_NEAR(s.orientation, angle, 0.02) << a << ' ' << b;
+    }
+    EXPECT_GE(s.orientation, 0);
+    EXPECT_LT(s.orientation, std::numbers::pi);
+  }
+  EXPECT_NEAR(measureRegion({{3, 4}}).aspect, 1, 1e-12);
 }
 
 TEST(RegionShape, OnePixel) {

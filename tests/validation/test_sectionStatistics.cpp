@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/Error.h"
 #include "common/distributionDistance.h"
 #include "validation/sectionStatistics.h"
 
@@ -50,6 +51,38 @@ TEST(SectionStatistics, AreaFractionOfAHalfFilledVolume) {
   EXPECT_EQ(s.planes, 48);
   EXPECT_NEAR(s.areaFraction, 0.5, 1e-9);
   EXPECT_TRUE(s.areas.empty());  // the half-space touches every window's edge
+}
+
+// Boxes 12 x 6 x 3 along x, y, z: the planes of one axis cut only its sections, each of the
+// box's own proportions (aspect 0.5 in xy and yz, 0.25 in xz), major axis along the image's x.
+TEST(SectionStatistics, PlaneAxisCutsOnlyThatPlane) {
+  const Dims dims{64, 64, 64};
+  std::vector<std::int32_t> ids(dims.count(), 0);
+  std::int32_t id = 0;
+  for (int k = 4; k + 3 < 60; k += 10)
+    for (int j = 4; j + 6 < 60; j += 12)
+      for (int i = 4; i + 12 < 60; i += 18) {
+        ++id;
+        for (int z = k; z < k + 3; ++z)
+          for (int y = j; y < j + 6; ++y)
+            for (int x = i; x < i + 12; ++x) ids[dims.index(x, y, z)] = id;
+      }
+  const std::pair<const char*, double> planes[] = {{"yz", 0.5}, {"xz", 0.25}, {"xy", 0.5}};
+  for (const auto& [name, aspect] : planes) {
+    SectionOptions options;
+    options.offsetsPerAxis = 64;
+    options.obliquePlanes = 0;
+    options.shapeMinArea = 10;
+    options.planeAxis = planeAxisOf(name);
+    const SectionStatistics s = sampleSections(dims, ids, options);
+    EXPECT_EQ(s.planes, 64) << name;
+    ASSERT_FALSE(s.shapes.empty()) << name;
+    for (const RegionShape& shape : s.shapes) {
+      EXPECT_NEAR(shape.aspect, aspect, 0.03) << name;
+      EXPECT_NEAR(shape.orientation, 0, 1e-9) << name;
+    }
+  }
+  EXPECT_THROW(planeAxisOf("zx"), InputError);
 }
 
 TEST(DistributionDistance, KolmogorovSmirnov) {
