@@ -22,7 +22,10 @@ constexpr double kSmoothing = 0.05;
 // Factors whose predicted sections are this close (KS) to the best one's fit as well, given the
 // photo's own counting noise (a KS of about 0.87 / sqrt(n) between two photos of n particles).
 constexpr double kKsTolerance = 0.01, kKsNoiseShare = 0.25;
-constexpr double kMinVisibleShare = 0.5;  // of a class's sections, at or above the photo's smallest area
+// Of a class's sections, at or above the photo's smallest area. A mix of sizes 10:1 in volume holds
+// many particles whose sections the photo shows one time in three or four; leaving their class out
+// gives their few sections to larger classes and the 3D sizes too few small particles.
+constexpr double kMinVisibleShare = 0.2;
 constexpr std::uint64_t kBootstrapStream = 0x626f6f74;  // "boot"
 constexpr int kBandPoints = 32;  // volumes the band of the implied volume CDF is given at
 
@@ -196,7 +199,7 @@ Eigen::MatrixXd sectionKernel(const std::vector<SectionSample>& samples, const A
   forEachSection(samples, perClass, minArea, sizeFactor, [&](int c, double area, double weight) {
     kernel(std::max(0, classes.classOfArea(area)), c) += weight;
   });
-  // A class whose sections mostly fall below the photo's specks is all but invisible in it: the
+  // A class whose sections nearly all fall below the photo's specks is all but invisible in it: the
   // photo cannot say how many there are, and an unfolding would keep whatever it started with.
   Eigen::VectorXd cut = Eigen::VectorXd::Zero(classes.count());
   forEachSection(samples, perClass, 0, sizeFactor, [&](int c, double, double weight) { cut[c] += weight; });

@@ -57,6 +57,21 @@ TEST(UnfoldSections, ClassesNothingWasMadeForGetNoShare) {
   EXPECT_NEAR(unfolded.sum(), 1, 1e-12);
 }
 
+// A class the photo shows one section in three of still counts (a 10:1 size mix holds many such
+// small particles); one shown one time in ten is left out: the photo cannot count it.
+TEST(SectionKernel, LeavesOutOnlyClassesThePhotoHardlyShows) {
+  AreaClasses classes;
+  classes.edges = {10, 20, 40};
+  std::vector<SectionSample> samples;
+  for (int i = 0; i < 30; ++i) {
+    samples.push_back({0, i % 3 == 0 ? 15.0 : 5.0, 2, 20});  // a third at or above minArea 10
+    samples.push_back({1, i % 10 == 0 ? 30.0 : 5.0, 4, 80});  // a tenth
+  }
+  const Eigen::MatrixXd kernel = sectionKernel(samples, classes, 10, 1);
+  EXPECT_NEAR(kernel(0, 0), 2.0 / 3, 1e-12);  // a third of the sections, each cut with chance 2
+  EXPECT_EQ(kernel.col(1).sum(), 0);
+}
+
 TEST(AreaClasses, SpanThePhotosAreasEvenlyInLogArea) {
   ExemplarStats stats;
   stats.minArea = 8;
