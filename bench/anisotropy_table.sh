@@ -3,7 +3,8 @@
 # plane's photo (`compare --plane`): the section-area KS, the aspect-ratio KS and the orientation KS
 # (Kuiper) with the 5 % critical KS of the sample sizes, and the volume W1/mean against the truth.
 # "ideal" is a second truth of the same settings (seed + 1000) against the first one's photos: what
-# a perfect reconstruction would score. "xy photo" is a solid made from the xy photo alone.
+# a perfect reconstruction would score. "xy photo" is a solid made from the xy photo alone, "three
+# photos" one made from all three (`particles --photo-xz --photo-yz`).
 # Usage: bench/anisotropy_table.sh [SIZE]   (default 128; run from the repo root after building)
 # Environment: SOLIDTEX_BIN  the solidtex binary (default ./build/cli/solidtex)
 set -euo pipefail
@@ -17,6 +18,7 @@ truths=(
   "3 : 1.5 : 1|1|--anisotropy 3 1.5 1"
   "3 : 1.5 : 1|2|--anisotropy 3 1.5 1"
   "needles 1 : 1 : 2.5, polytopes|1|--anisotropy 1 1 2.5 --shape polytope --elongation 1"
+  "plates 2 : 2 : 1, half large|3|--anisotropy 2 2 1 --large-share 0.5"
 )
 common="--dims 256 256 256 --small-radius 4 --large-radius 7.5"
 
@@ -55,4 +57,7 @@ for entry in "${truths[@]}"; do
   row "$name, seed $seed: ideal" "$out/t" "$out/ideal/truth.vdb" ""
   "$bin" particles "$out/t/photo.png" -o "$out/s.vdb" --size "$size" --seed 1 --quiet > /dev/null
   row "$name, seed $seed: xy photo" "$out/t" "$out/s.vdb" "$out/t/truth.vdb"
+  "$bin" particles "$out/t/photo.png" --photo-xz "$out/t/photo_xz.png" --photo-yz "$out/t/photo_yz.png" \
+    -o "$out/s.vdb" --size "$size" --seed 1 --quiet > /dev/null
+  row "$name, seed $seed: three photos" "$out/t" "$out/s.vdb" "$out/t/truth.vdb"
 done

@@ -24,7 +24,17 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   auto particleTexture = std::make_shared<std::string>("projected");
   CLI::App* command =
       app.add_subcommand("particles", "Make a 3D particle solid (.vdb) from a photo of particles");
-  command->add_option("photo", job->photo, "Photo of particles (PNG, JPEG, TIFF, EXR)")->required();
+  command
+      ->add_option("photo", job->photo,
+                   "Photo of particles (PNG, JPEG, TIFF, EXR); with --photo-xz or --photo-yz, the xy plane's")
+      ->required();
+  command->add_option(
+      "--photo-xz", job->photoXz,
+      "A material that differs by direction: the photo of its xz plane (x across, z down), at "
+      "the xy photo's pixel size; the particles are aligned with the axes. Alone, it stands "
+      "for the yz plane too");
+  command->add_option("--photo-yz", job->photoYz,
+                      "The photo of the yz plane (y across, z down); alone, it stands for the xz plane too");
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
   auto* sizeOption =
       command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();

@@ -29,10 +29,10 @@ void report(const Progress& progress, const std::string& step, double fraction =
   if (progress) progress(step, fraction);
 }
 
-double voxelsPerPixel(const ParticleSolidOptions& options, const ExemplarStats& stats) {
-  if (options.voxelsPerPixel <= 0) return defaultVoxelsPerPixel(stats, options.dims);
+double voxelsPerPixel(const ParticleSolidOptions& options, int largestSide) {
+  if (options.voxelsPerPixel <= 0) return defaultVoxelsPerPixel(largestSide, options.dims);
   // Below a voxel across, the photo's largest particle would be no particle at all.
-  const double largest = largestBoxSide(stats);
+  const double largest = largestSide;
   if (largest * options.voxelsPerPixel < 1) {
     char text[160];
     std::snprintf(
@@ -81,12 +81,12 @@ std::optional<TiledMatrix> makeBlock(const ParticleSolidOptions& options, Textur
 
 // The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
 // particles at the sizes the solid will have (sized first with the sharp hulls).
-ParticleFactory makeFactory(const ParticleSolidOptions& options, const ExemplarStats& stats, double scale,
-                            SmoothingFit& smoothing) {
+ParticleFactory makeFactory(const ParticleSolidOptions& options, const ExemplarStats& stats,
+                            PlanePhotos planes, double scale, SmoothingFit& smoothing) {
   ParticleOptions particles = options.particles;
   particles.seed = options.seed;
   particles.smoothing.radius = options.smoothing.value_or(0);
-  ParticleFactory factory(stats, particles);
+  ParticleFactory factory(stats, particles, planes);
   if (options.smoothing) {
     smoothing.radius = *options.smoothing;
     return factory;
@@ -163,19 +163,19 @@ int largestBoxSide(const ExemplarStats& stats) {
   return side;
 }
 
-double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims) {
+double defaultVoxelsPerPixel(int largestSide, const Dims& dims) {
   // 1:1 keeps particle shapes as resolved as in the photo, unless particles would be so large
   // that few fit and the walls dominate the packing.
   const int smallestEdge = std::min({dims.x, dims.y, dims.z});
-  return std::min(1.0, 0.25 * smallestEdge / largestBoxSide(stats));
+  return std::min(1.0, 0.25 * smallestEdge / largestSide);
 }
 
-float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel) {
-  return float(std::sqrt(3.0) * std::ceil(largestBoxSide(stats) * voxelsPerPixel) / 2 + 1);
+float placementRadiusCap(int largestSide, double voxelsPerPixel) {
+  return float(std::sqrt(3.0) * std::ceil(largestSide * voxelsPerPixel) / 2 + 1);
 }
 
-int openBoundaryMargin(const ExemplarStats& stats, double particleScale) {
-  return int(std::ceil(largestBoxSide(stats) * particleScale / 2));
+int openBoundaryMargin(int largestSide, double particleScale) {
+  return int(std::ceil(largestSide * particleScale / 2));
 }
 
 void checkParticleSolidOptions(const ParticleSolidOptions& options) {
@@ -219,15 +219,39 @@ const ExemplarStats& ParticleSolidBuilder::analyze(const cv::Mat& photoSrgb, con
   solid_.timer.start("analysis");
   report(progress_, "segmenting the photo");
   solid_.stats = analyzeExemplar(photoSrgb, name, options_.segmentation);
+  photo_ = photoSrgb;
   return solid_.stats;
+}
+
+void ParticleSolidBuilder::analyzePlanes(const cv::Mat& xzSrgb, const std::string& xzName,
+                                         const cv::Mat& yzSrgb, const std::string& yzName) {
+  const auto isTheXyPhoto = [&](const cv::Mat& photo) {
+    return photo.size() == photo_.size() && photo.type() == photo_.type() &&
+           cv::norm(photo, photo_, cv::NORM_INF) == 0;
+  };
+  if (isTheXyPhoto(xzSrgb) && isTheXyPhoto(yzSrgb)) return;
+  if (options_.segmentation.maskPath || !options_.segmentation.mask.empty())
+    throw OptionError("--mask segments one photo: give it without --photo-xz and --photo-yz");
+  report(progress_, "segmenting the xz and yz photos");
+  solid_.planeStats = {analyzeExemplar(xzSrgb, xzName, options_.segmentation),
+                       analyzeExemplar(yzSrgb, yzName, options_.segmentation)};
+}
+
+int ParticleSolidBuilder::largestSide() const {
+  int side = largestBoxSide(solid_.stats);
+  for (const ExemplarStats& plane : solid_.planeStats) side = std::max(side, largestBoxSide(plane));
+  return side;
 }
 
 void ParticleSolidBuilder::makeParticles() {
   const ExemplarStats& stats = solid_.stats;
-  const double scale = solid_.voxelsPerPixel = voxelsPerPixel(options_, stats);
+  const double scale = solid_.voxelsPerPixel = voxelsPerPixel(options_, largestSide());
   solid_.timer.start("particle_shapes");
   report(progress_, "building particle shapes");
-  factory_.emplace(makeFactory(options_, stats, scale, solid_.smoothing));
+  const PlanePhotos planes = solid_.planeStats.size() == 2
+                                 ? PlanePhotos{&solid_.planeStats[0], &solid_.planeStats[1]}
+                                 : PlanePhotos{};
+  factory_.emplace(makeFactory(options_, stats, planes, scale, solid_.smoothing));
 
   solid_.timer.start("sizing");
   solid_.sizing = {1, {}, stats.histogram.ratios, 0, {}};
@@ -243,13 +267,14 @@ const PlacementResult& ParticleSolidBuilder::place() {
   // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
   const double particleScale = solid_.voxelsPerPixel * solid_.sizing.sizeFactor;
   const Dims& dims = options_.dims;
-  const int margin = options_.boundary == Boundary::Open ? openBoundaryMargin(stats, particleScale) : 0;
+  const int margin =
+      options_.boundary == Boundary::Open ? openBoundaryMargin(largestSide(), particleScale) : 0;
   const Dims placed{dims.x + 2 * margin, dims.y + 2 * margin, dims.z + 2 * margin};
   solid_.memoryEstimate = particleSolidPeakBytes(dims, placed, options_.placer, options_.denseColor);
   requireVolumeBytes(margin > 0 ? "placing particles in a block" : "placing particles", placed,
                      solid_.memoryEstimate);
   const bool periodic = options_.boundary == Boundary::Periodic;
-  const float radiusCap = placementRadiusCap(stats, particleScale);
+  const float radiusCap = placementRadiusCap(largestSide(), particleScale);
   PlacementOptions placement;
   placement.dims = placed;
   placement.periodic = periodic;
@@ -262,7 +287,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
     placement.sizeFactor = solid_.sizing.sizeFactor;
   }
   std::optional<PlacementTimeline> timeline;
-  const double largest = largestBoxSide(stats) * particleScale;
+  const double largest = largestSide() * particleScale;
   // Bricks report after each brick: their progress needs no timing.
   if (const std::optional<Dims> block = options_.timePlacement && options_.brickEdge == 0
                                             ? timelineBlock(placed, dims, largest)

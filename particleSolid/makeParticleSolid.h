@@ -86,7 +86,9 @@ struct TextureChoice {
 
 /// A particle solid and how it was made.
 struct ParticleSolid {
-  ExemplarStats stats;        ///< the photo's segmentation and particle statistics
+  ExemplarStats stats;  ///< the photo's segmentation and particle statistics (the xy photo's)
+  /// The xz and yz photos' statistics when the solid is made from three planes' photos; empty else.
+  std::vector<ExemplarStats> planeStats;
   double voxelsPerPixel = 1;  ///< the photo's scale in the volume
   SmoothingFit smoothing;
   SectionSizing sizing;
@@ -116,6 +118,13 @@ public:
   /// Segments the photo (CV_32FC3 sRGB in [0, 1], RGB order) and measures its particles; `name`
   /// labels it in reports and messages.
   const ExemplarStats& analyze(const cv::Mat& photoSrgb, const std::string& name);
+  /// For a material that differs by direction, after analyze (whose photo is then the xy plane's):
+  /// segments the photos of the xz plane (x across, z down) and of the yz plane (y across, z down),
+  /// at the xy photo's pixel size; the particles are then aligned (PlanePhotos). Both the xy photo
+  /// itself: nothing, and the solid is the one-photo solid, byte for byte. Refuses (OptionError) a
+  /// mask, which segments one photo.
+  void analyzePlanes(const cv::Mat& xzSrgb, const std::string& xzName, const cv::Mat& yzSrgb,
+                     const std::string& yzName);
   /// Builds the hull shapes and fits the smoothing and the section sizing.
   void makeParticles();
   /// Places particles until the photo's area fraction is met or nothing more fits.
@@ -124,8 +133,11 @@ public:
   ParticleSolid finish();
 
 private:
+  int largestSide() const;  // pixels: the largest particle box side of every photo
+
   ParticleSolidOptions options_;
   Progress progress_;
+  cv::Mat photo_;  // the xy photo, to know it again among the planes'
   ParticleSolid solid_;
   std::optional<ParticleFactory> factory_;
 };
@@ -150,15 +162,16 @@ constexpr int kMaxVolumeEdge = 2048;
 /// The largest side of the photo's particle boxes, pixels.
 int largestBoxSide(const ExemplarStats& stats);
 
-/// Voxels per photo pixel when none is asked for: 1, or less when the largest particle would exceed a
-/// quarter of the volume's smallest edge.
-double defaultVoxelsPerPixel(const ExemplarStats& stats, const Dims& dims);
+/// Voxels per photo pixel when none is asked for: 1, or less when the largest particle (its
+/// largest side in pixels) would exceed a quarter of the volume's smallest edge.
+double defaultVoxelsPerPixel(int largestSide, const Dims& dims);
 
-/// The spaciousness cap for placing the photo's particles (the paper's sqrt(3) D / 2, plus a voxel).
-float placementRadiusCap(const ExemplarStats& stats, double voxelsPerPixel);
+/// The spaciousness cap for placing particles whose largest side is `largestSide` pixels (the
+/// paper's sqrt(3) D / 2, plus a voxel).
+float placementRadiusCap(int largestSide, double voxelsPerPixel);
 
 /// The margin an open boundary places particles in around the volume: the radius of the largest
 /// particle, so that the faces of the placement's volume leave the volume's own faces unaffected.
-int openBoundaryMargin(const ExemplarStats& stats, double particleScale);
+int openBoundaryMargin(int largestSide, double particleScale);
 
 }  // namespace solidtex

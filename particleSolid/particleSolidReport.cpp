@@ -110,6 +110,10 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
       {"size_factor", std::to_string(solid.sizing.sizeFactor)},
       {"smoothing", std::to_string(solid.smoothing.radius)}};
   addWholeVolumesMetadata(solid.wholeVolumes, metadata);
+  if (solid.planeStats.size() == 2) {
+    metadata["exemplar_xz"] = std::filesystem::path(solid.planeStats[0].name).filename().string();
+    metadata["exemplar_yz"] = std::filesystem::path(solid.planeStats[1].name).filename().string();
+  }
   const SizingUncertainty& u = solid.sizing.uncertainty;
   if (!u.bandVolumes.empty())
     metadata["particle_volume_cdf_band"] =
@@ -130,6 +134,10 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
                            {"views", options.particles.views},
                            {"photo", toJson(solid.stats)},
                            {"volume", placementJson(solid.placement, solid.stats, solid.voxelsPerPixel)}};
+  if (solid.planeStats.size() == 2) {
+    report["photo_xz"] = toJson(solid.planeStats[0]);
+    report["photo_yz"] = toJson(solid.planeStats[1]);
+  }
   if (solid.bricks)
     report["bricks"] = bricksJson(*solid.bricks, options.brickEdge, std::max(1, options.brickTeam.size));
   const SectionSizing& sizing = solid.sizing;

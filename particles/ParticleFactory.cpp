@@ -69,12 +69,49 @@ std::optional<HullMesh> tryHull(const ExemplarStats& stats, const std::vector<in
   return hull;
 }
 
+// One plane's photo for aligned hulls: its statistics, the particles whose contours carve, and the
+// view that maps its image onto the volume's axes. Columns: the image's x, its y (up, as
+// normalizeContour flips the photo's rows), the viewing direction (their cross product).
+struct PlaneView {
+  const ExemplarStats* stats = nullptr;
+  std::vector<int> sources;
+  Eigen::Matrix3d rotation;
+};
+
+std::vector<PlaneView> planeViews(const ExemplarStats& xy, const PlanePhotos& planes) {
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                        z = Eigen::Vector3d::UnitZ();
+  const auto view = [](const ExemplarStats& stats, const Eigen::Vector3d& across,
+                       const Eigen::Vector3d& down) {
+    PlaneView v{&stats, contourSources(stats), {}};
+    v.rotation << across, -down, across.cross(-down);
+    return v;
+  };
+  return {view(xy, x, y), view(*planes.xz, x, z), view(*planes.yz, y, z)};
+}
+
+std::optional<HullMesh> tryAlignedHull(const std::vector<PlaneView>& planes, const ParticleOptions& options,
+                                       Rng& rng) {
+  std::vector<Silhouette> views;
+  for (const PlaneView& plane : planes) {
+    const int source = plane.sources[uniformIndex(rng, plane.sources.size())];
+    views.push_back(
+        {normalizeContour(plane.stats->particles[std::size_t(source)].contour, options.contourVertices),
+         plane.rotation});
+  }
+  HullMesh hull = visualHull(views);
+  if (hull.volume() < kMinHullVolume) return std::nullopt;
+  return hull;
+}
+
 HullMesh buildHull(const ExemplarStats& stats, const std::vector<int>& sources,
-                   const ParticleOptions& options, int index) {
+                   const std::vector<PlaneView>& planes, const ParticleOptions& options, int index) {
   Rng rng(deriveSeed(options.seed, std::uint64_t(index)));
   checkInterruption();
   for (int attempt = 0; attempt < kAttemptsPerHull; ++attempt)
-    if (std::optional<HullMesh> hull = tryHull(stats, sources, options, rng)) return std::move(*hull);
+    if (std::optional<HullMesh> hull =
+            planes.empty() ? tryHull(stats, sources, options, rng) : tryAlignedHull(planes, options, rng))
+      return std::move(*hull);
   throw InputError("the photo's particle contours do not overlap enough to carve 3D particle shapes");
 }
 
@@ -122,6 +159,19 @@ Weighted anySide(const std::vector<SizePair>& pairs) {
   return out;
 }
 
+// Aligned: the z extents of the xz photo's boxes x wide and of the yz photo's y wide, by frequency.
+int drawAlignedDepth(const PlanePhotos& planes, int x, int y, Rng& rng) {
+  Weighted sharing, any;
+  for (const auto& [photo, across] : {std::pair{planes.xz, x}, std::pair{planes.yz, y}})
+    for (const SizePair& p : photo->sizePairs) {
+      any.emplace_back(p.height, p.count);
+      if (p.width == across) sharing.emplace_back(p.height, p.count);
+    }
+  if (!sharing.empty()) return drawWeighted(sharing, rng);
+  if (!any.empty()) return drawWeighted(any, rng);
+  return (x + y + 1) / 2;
+}
+
 int drawDepth(const std::vector<SizePair>& pairs, int width, int height, Rng& rng) {
   Weighted candidates = depthCandidates(pairs, width, height);
   if (candidates.empty()) candidates = anySide(pairs);
@@ -151,21 +201,28 @@ int drawSource(const std::vector<Particle2D>& particles, int width, int height, 
 
 }  // namespace
 
-ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options)
-    : stats_(stats), options_(options) {
+ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
+                                 PlanePhotos planes)
+    : stats_(stats), planes_(planes), options_(options) {
   checkOptions(options);
   const std::vector<int> sources = contourSources(stats);
+  const std::vector<PlaneView> views =
+      planes.aligned() ? planeViews(stats, planes) : std::vector<PlaneView>{};
   sharpHulls_.resize(std::size_t(options.shapes));
   hulls_.resize(sharpHulls_.size());
   tbb::parallel_for(0, options.shapes, [&](int i) {
-    sharpHulls_[std::size_t(i)] = buildHull(stats, sources, options, i);
+    sharpHulls_[std::size_t(i)] = buildHull(stats, sources, views, options, i);
     hulls_[std::size_t(i)] = smoothHull(sharpHulls_[std::size_t(i)], options.smoothing);
   });
 }
 
 ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
-                                 std::vector<HullMesh> sharpHulls)
-    : stats_(stats), options_(options), sharpHulls_(std::move(sharpHulls)), hulls_(sharpHulls_.size()) {
+                                 PlanePhotos planes, std::vector<HullMesh> sharpHulls)
+    : stats_(stats),
+      planes_(planes),
+      options_(options),
+      sharpHulls_(std::move(sharpHulls)),
+      hulls_(sharpHulls_.size()) {
   checkOptions(options);
   tbb::parallel_for(std::size_t(0), hulls_.size(),
                     [&](std::size_t i) { hulls_[i] = smoothHull(sharpHulls_[i], options.smoothing); });
@@ -177,18 +234,21 @@ ParticleFactory ParticleFactory::withSmoothing(const HullSmoothing& smoothing, i
   const std::size_t count =
       maxHulls > 0 ? std::min(sharpHulls_.size(), std::size_t(maxHulls)) : sharpHulls_.size();
   options.shapes = int(count);
-  return ParticleFactory(stats_, options, {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
+  return ParticleFactory(stats_, options, planes_,
+                         {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
 }
 
 ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {
-  const int depth = drawDepth(stats_.sizePairs, width, height, rng);
+  const int depth = aligned() ? drawAlignedDepth(planes_, width, height, rng)
+                              : drawDepth(stats_.sizePairs, width, height, rng);
   return {width, height, depth, drawSource(stats_.particles, width, height, rng)};
 }
 
 VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) const {
   checkInterruption();
   const std::size_t hull = uniformIndex(rng, hulls_.size());
-  VoxelShape shape = voxelize(hulls_[hull], randomRotation(rng), width, height, depth);
+  const Eigen::Matrix3d turn = aligned() ? Eigen::Matrix3d::Identity() : randomRotation(rng);
+  VoxelShape shape = voxelize(hulls_[hull], turn, width, height, depth);
   shape.pose.hull = int(hull);
   return shape;
 }

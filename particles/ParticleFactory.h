@@ -25,24 +25,36 @@ struct ParticleSize {
   int source = -1;  ///< index into ExemplarStats::particles whose colour and residual it takes (3.6)
 };
 
+/// The photos of the other two planes of an anisotropic material, beside the xy photo a factory
+/// takes (x across, y down): xz (x across, z down) and yz (y across, z down), at the same pixel size.
+struct PlanePhotos {
+  const ExemplarStats* xz = nullptr;
+  const ExemplarStats* yz = nullptr;
+  bool aligned() const { return xz != nullptr && yz != nullptr; }
+};
+
 /// Makes 3D particles from the photo's contours: visual hulls (3.4), sizes (3.5).
 class ParticleFactory {
 public:
   /// Builds the pool of unit hulls, in parallel and deterministically for the seed (identical at any
   /// thread count). Contours of particles cut by the photo's border are used only when there are no
-  /// others. Keeps a reference to `stats`. Throws InputError for options out of range or a photo
-  /// whose contours carve no hull.
-  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options);
+  /// others. Keeps a reference to `stats` and to `planes`' statistics. With both other planes'
+  /// photos the particles are aligned: each hull is carved by one contour of each plane's photo,
+  /// seen along that plane's normal (three views whatever `views` says), and never turned. Throws
+  /// InputError for options out of range or a photo whose contours carve no hull.
+  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options, PlanePhotos planes = {});
 
   /// Depth for a (width, height) pair: drawn by frequency from the other side of every pair sharing
   /// width or height with it (paper 3.5); `source` is a particle whose box is (width, height).
   /// A pair equal to (width, height) offers both its values, each with half its count. Sizes that no
   /// pair shares a value with draw from all sides of all pairs; `source` is then the non-border
-  /// particle with the nearest box (|dw| + |dh|), random among equals.
+  /// particle with the nearest box (|dw| + |dh|), random among equals. Aligned, width is x and
+  /// height y, and the depth (z) is the height of the xz photo's boxes as wide as x and of the yz
+  /// photo's as wide as y, by frequency (any of their heights when none is).
   ParticleSize pickDepth(int width, int height, Rng& rng) const;
 
-  /// A particle from a random pool hull under a random rotation, non-uniformly scaled to the box
-  /// (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
+  /// A particle from a random pool hull under a random rotation (none when aligned), non-uniformly scaled to
+  /// the box (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
   /// which loses the face layers no voxel centre reached (see voxelize), with its pose. Thread-safe.
   /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
   VoxelShape make(int width, int height, int depth, Rng& rng) const;
@@ -53,12 +65,16 @@ public:
 
   const std::vector<HullMesh>& hulls() const { return hulls_; }
   const ParticleOptions& options() const { return options_; }
+  /// Made from three planes' photos: its particles keep the volume's axes, and the xy photo's
+  /// particles are their sections across z.
+  bool aligned() const { return planes_.aligned(); }
 
 private:
-  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
+  ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options, PlanePhotos planes,
                   std::vector<HullMesh> sharpHulls);
 
   const ExemplarStats& stats_;
+  PlanePhotos planes_;
   ParticleOptions options_;
   std::vector<HullMesh> sharpHulls_;  ///< the visual hulls (paper 3.4)
   std::vector<HullMesh> hulls_;       ///< sharpHulls_ smoothed as the options say

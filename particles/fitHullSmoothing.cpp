@@ -32,9 +32,9 @@ ShapeColumns photoShapes(const ExemplarStats& stats, double voxelsPerPixel) {
   return out;
 }
 
-// The shape's voxels in layer `layer` across `axis`, as pixels. The shapes are randomly turned, so
-// an axis-aligned cut is a random section, and it is sampled on the voxel grid as the photo's
-// pixels are (an oblique sampling grid would add its own jagged edges).
+// The shape's voxels in layer `layer` across `axis`, as pixels. The shapes are randomly turned
+// (unless aligned), so an axis-aligned cut is a random section, and it is sampled on the voxel grid as the
+// photo's pixels are (an oblique sampling grid would add its own jagged edges).
 std::vector<cv::Point> layerPixels(const VoxelShape& shape, int axis, int layer) {
   std::vector<cv::Point> pixels;
   const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
@@ -62,7 +62,7 @@ ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& fa
     const VoxelShape shape = factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng);
     const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
     for (int p = 0; p < kPlanesPerShape; ++p) {
-      const int axis = int(uniformIndex(rng, 3));
+      const int axis = factory.aligned() ? 2 : int(uniformIndex(rng, 3));  // aligned: as the xy photo
       const std::vector<cv::Point> pixels =
           layerPixels(shape, axis, int(uniformIndex(rng, std::uint64_t(extent[axis]))));
       if (double(pixels.size()) >= kMinShapeArea) out.add(measureRegion(pixels));

@@ -24,6 +24,14 @@
 namespace solidtex {
 namespace {
 
+// The xz and yz photos, one standing for both.
+void analyzePlanePhotos(const ParticleSolidJob& job, ParticleSolidBuilder& builder) {
+  if (!job.photoXz && !job.photoYz) return;
+  const std::string xzPath = job.photoXz.value_or(*job.photoYz), yzPath = job.photoYz.value_or(*job.photoXz);
+  const cv::Mat xz = loadPhoto(xzPath), yz = xzPath == yzPath ? xz : loadPhoto(yzPath);
+  builder.analyzePlanes(xz, xzPath, yz, yzPath);
+}
+
 nlohmann::json meshReport(OutputFiles& outputs, const std::string& path,
                           const std::vector<ParticleMesh>& meshes) {
   std::size_t triangles = 0;
@@ -68,6 +76,8 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
     builder.emplace(options, [&](const std::string& step, double fraction) { line.update(step, fraction); });
     if (root) {
       outputs.addInput(job.photo);
+      for (const auto& plane : {job.photoXz, job.photoYz})
+        if (plane) outputs.addInput(*plane);
       if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
       addVolumeOutputs(outputs, job.output, job.report, job.preview);
       addVolumeExports(outputs, job.exports);
@@ -84,6 +94,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
     photo = loadPhoto(job.photo);
     const ExemplarStats& stats = builder->analyze(photo, job.photo);
     if (root) warnOfDroppedRegions(stats, &line);
+    analyzePlanePhotos(job, *builder);
     builder->makeParticles();
     builder->place();
   } catch (...) {

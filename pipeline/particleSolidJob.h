@@ -11,7 +11,10 @@ namespace solidtex {
 
 /// `solidtex particles`: photo file to particle solid files (.vdb, report, previews, exports, meshes).
 struct ParticleSolidJob : ParticleSolidOptions {
-  std::string photo;
+  std::string photo;  ///< the xy plane's when photoXz or photoYz is given
+  /// A material that differs by direction: the photos of its xz and yz planes (z down); one given
+  /// stands for both. Both the same as `photo`: the one-photo solid.
+  std::optional<std::string> photoXz, photoYz;
   std::string output;  ///< .vdb path
   std::optional<std::string> report;
   std::optional<std::string> preview;   ///< folder for PNGs

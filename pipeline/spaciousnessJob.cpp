@@ -49,8 +49,8 @@ nlohmann::json runSpaciousness(const SpaciousnessJob& job) {
   const cv::Mat photo = loadPhoto(job.photo);
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
   const Dims dims{job.size, job.size, job.size};
-  const double scale = defaultVoxelsPerPixel(stats, dims);
-  const float cap = placementRadiusCap(stats, scale);
+  const double scale = defaultVoxelsPerPixel(largestBoxSide(stats), dims);
+  const float cap = placementRadiusCap(largestBoxSide(stats), scale);
 
   progress.update("placing particles");
   ParticleOptions particleOptions;

@@ -40,9 +40,11 @@ std::vector<Eigen::Vector3d> centresOf(const VoxelShape& shape) {
 
 // A random plane cutting the shape: its section area is the count of voxel centres within half a
 // voxel of it (a unit-thick slab holds area x 1 of volume), and the shape's extent along the normal
-// is how likely a plane of a random family is to cut it at all.
-SectionSample cutAtRandom(const std::vector<Eigen::Vector3d>& centres, std::vector<double>& along, Rng& rng) {
-  const Eigen::Vector3d n = randomDirection(rng);
+// is how likely a plane of a random family is to cut it at all. Aligned particles are cut across z,
+// as the xy photo shows them.
+SectionSample cutAtRandom(const std::vector<Eigen::Vector3d>& centres, std::vector<double>& along,
+                          bool acrossZ, Rng& rng) {
+  const Eigen::Vector3d n = acrossZ ? Eigen::Vector3d::UnitZ() : randomDirection(rng);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t i = 0; i < centres.size(); ++i) {
     along[i] = n.dot(centres[i]);
@@ -69,7 +71,7 @@ std::vector<SectionSample> sampleClass(const ExemplarStats& stats, const Particl
         centresOf(factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng));
     along.resize(centres.size());
     for (int p = 0; p < planes; ++p) {
-      SectionSample sample = cutAtRandom(centres, along, rng);
+      SectionSample sample = cutAtRandom(centres, along, factory.aligned(), rng);
       sample.area /= scale * scale;
       sample.width /= scale;
       sample.volume = double(centres.size()) / (scale * scale * scale);

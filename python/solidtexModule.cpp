@@ -160,9 +160,15 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   const std::optional<std::string> output = keywords.path("output"), reportPath = keywords.path("report");
   const bool progress = keywords.flag("progress").value_or(false);
   options.timePlacement = progress;
+  const py::object xzPhoto = keywords.take("photo_xz"), yzPhoto = keywords.take("photo_yz");
   keywords.finish();
-  std::string name;
+  std::string name, xzName, yzName;
   const cv::Mat image = photoOf(photo, name);
+  cv::Mat xz, yz;  // a material that differs by direction: one given stands for both
+  if (!xzPhoto.is_none()) xz = photoOf(xzPhoto, xzName, "photo_xz");
+  if (!yzPhoto.is_none()) yz = photoOf(yzPhoto, yzName, "photo_yz");
+  if (xz.empty()) xz = yz, xzName = yzName;
+  if (yz.empty()) yz = xz, yzName = xzName;
   ParticleSolid solid;
   nlohmann::json report;
   runReleased([&] {
@@ -171,14 +177,20 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
     std::optional<OutputFiles> outputs;
     if (output || reportPath) {
       outputs.emplace();
-      if (name != "array") outputs->addInput(name);
+      for (const std::string& input : {name, xzName, yzName})
+        if (!input.empty() && input != "array") outputs->addInput(input);
       if (output) outputs->addFile("output", *output, {".vdb"});
       if (reportPath) outputs->addFile("report", *reportPath, {".json"});
     }
-    solid = makeParticleSolid(image, name, options, [&line](const std::string& step, double fraction) {
+    ParticleSolidBuilder builder(options, [&line](const std::string& step, double fraction) {
       line.update(step, fraction);
       checkInterruption();
     });
+    builder.analyze(image, name);
+    if (!xz.empty()) builder.analyzePlanes(xz, xzName, yz, yzName);
+    builder.makeParticles();
+    builder.place();
+    solid = builder.finish();
     line.done();
     report = particleSolidReport(solid, options);
     report["time_seconds"] = solid.timer.finish();
@@ -550,7 +562,9 @@ PYBIND11_MODULE(solidtex, m) {
         "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB) and the "
         "report (a dict). Keywords as the command line's options: size, dims, scale, placer, sizing, "
         "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
-        "mask, invert, split, outlines, min_area; output (.vdb) and report (.json) write files; progress "
+        "mask, invert, split, outlines, min_area; photo_xz and photo_yz (the other planes' photos of a "
+        "material that differs by direction, photo then the xy plane's; one stands for both); output (.vdb) "
+        "and report (.json) write files; progress "
         "shows the "
         "progress line. Ctrl-C stops it and leaves no file.");
   m.def("synthesize", &synthesize, py::arg("exemplar"),

@@ -108,6 +108,8 @@ TEST_F(BadInput, BrokenPhotosAreRefusedByEveryCommandThatReadsOne) {
     const std::string in = std::string("IN/") + photo;
     expectRefused("analyze " + in + " --report OUT/r.json --labels OUT/l.png", 1);
     expectRefused("particles " + in + " --size 16 -o OUT/v.vdb --report OUT/r.json --preview OUT/p", 1);
+    expectRefused("particles IN/coins.png --photo-yz " + in + " --size 16 -o OUT/v.vdb --report OUT/r.json",
+                  1);
     expectRefused("compare " + in + " IN/good.vdb --report OUT/r.json --plot OUT/p.png", 1);
   }
   for (const char* photo : {"empty.png", "truncated.png", "idat.png", "huge.png"}) {

@@ -1,10 +1,12 @@
 #include <map>
+#include <numbers>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include "common/Error.h"
 #include "particles/ParticleFactory.h"
+#include "segmentation/regionShape.h"
 #include "shapes.h"
 
 namespace solidtex {
@@ -87,6 +89,46 @@ TEST(ParticleFactory, MakesAboutTheRequestedBoxInOnePiece) {
     EXPECT_TRUE(test::tightInBox(shape));
     EXPECT_EQ(test::firstPieceSize(shape), shape.voxelCount());
     EXPECT_EQ(stats.particles[std::size_t(size.source)].box.size(), cv::Size(size.width, size.height));
+  }
+}
+
+// The middle layer of a shape across `axis`, as a region in that plane's photo's image axes (x
+// across for xy and xz, y for yz; then y or z down).
+RegionShape middleSection(const VoxelShape& shape, int axis) {
+  const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
+  const int across = axis == 0 ? 1 : 0, down = axis == 2 ? 1 : 2;
+  std::vector<cv::Point> pixels;
+  int c[3];
+  c[axis] = extent[axis] / 2;
+  for (c[down] = 0; c[down] < extent[down]; ++c[down])
+    for (c[across] = 0; c[across] < extent[across]; ++c[across])
+      if (shape.inside[shape.dims.index(c[0], c[1], c[2])]) pixels.emplace_back(c[across], c[down]);
+  return measureRegion(pixels);
+}
+
+// Three planes' photos of ellipses 40 x 20 (xy), 40 x 12 (xz) and 20 x 12 (yz): an aligned
+// particle is 40 x 20 x 12 deep, never turned, and its middle sections are the photos' ellipses.
+TEST(ParticleFactory, AlignedParticlesTakeEachPlanesContours) {
+  const ExemplarStats xy = test::statsOf({test::ellipseContour(19.5, 9.5)});
+  const ExemplarStats xz = test::statsOf({test::ellipseContour(19.5, 5.5)});
+  const ExemplarStats yz = test::statsOf({test::ellipseContour(9.5, 5.5)});
+  const ParticleFactory factory(xy, {.shapes = 4}, {&xz, &yz});
+  ASSERT_TRUE(factory.aligned());
+  EXPECT_FALSE(ParticleFactory(xy, {.shapes = 1}, {&xz, nullptr}).aligned());
+  Rng rng(4);
+  for (int i = 0; i < 8; ++i) {
+    const ParticleSize size = factory.pickDepth(40, 20, rng);
+    ASSERT_EQ(size.depth, 12);
+    const VoxelShape shape = factory.make(size.width, size.height, size.depth, rng);
+    EXPECT_GE(shape.dims.x, 38);
+    EXPECT_GE(shape.dims.y, 18);
+    EXPECT_GE(shape.dims.z, 10);
+    const std::pair<int, double> planes[] = {{2, 0.5}, {1, 12.0 / 40}, {0, 12.0 / 20}};
+    for (const auto& [axis, aspect] : planes) {
+      const RegionShape section = middleSection(shape, axis);
+      EXPECT_NEAR(section.aspect, aspect, 0.05) << axis;
+      EXPECT_NEAR(std::min(section.orientation, std::numbers::pi - section.orientation), 0, 0.03) << axis;
+    }
   }
 }
 

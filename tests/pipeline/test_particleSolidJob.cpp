@@ -169,6 +169,23 @@ TEST(ParticleSolidJob, SameSeedGivesTheSameBytesWithOneAndTwoThreads) {
   for (const auto& path : {one, two, other, oneMeshes, twoMeshes}) fs::remove(path);
 }
 
+// The xy photo given again for the xz and yz planes is the one-photo solid, byte for byte; a
+// different photo for them makes another (aligned) solid.
+TEST(ParticleSolidJob, ThreeIdenticalPhotosGiveTheOnePhotoSolid) {
+  const fs::path one = scratch("one_photo.vdb"), three = scratch("three_photos.vdb"),
+                 other = scratch("other_planes.vdb");
+  runParticleSolid(jobFor("coins", 32, one));
+  ParticleSolidJob same = jobFor("coins", 32, three);
+  same.photoXz = same.photoYz = same.photo;
+  runParticleSolid(same);
+  ParticleSolidJob planes = jobFor("coins", 32, other);
+  planes.photoXz = std::string(SOLIDTEX_DATA_DIR) + "/particles/smarties.png";
+  runParticleSolid(planes);
+  EXPECT_EQ(bytesOf(one), bytesOf(three));
+  EXPECT_NE(bytesOf(one), bytesOf(other));
+  for (const auto& path : {one, three, other}) fs::remove(path);
+}
+
 TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
   const fs::path output = scratch("bad.vdb");
   fs::remove(output);
@@ -178,6 +195,14 @@ TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
   EXPECT_THROW(runParticleSolid(absurd), InputError);
   ParticleSolidJob missing = jobFor("no-such-photo", 32, output);
   EXPECT_THROW(runParticleSolid(missing), InputError);
+  EXPECT_FALSE(fs::exists(output));
+  ParticleSolidJob missingPlane = jobFor("coins", 32, output);
+  missingPlane.photoYz = "no-such-photo.png";
+  EXPECT_THROW(runParticleSolid(missingPlane), InputError);
+  ParticleSolidJob maskedPlanes = jobFor("coins", 32, output);
+  maskedPlanes.photoXz = std::string(SOLIDTEX_DATA_DIR) + "/particles/smarties.png";
+  maskedPlanes.segmentation.maskPath = maskedPlanes.photo;
+  EXPECT_THROW(runParticleSolid(maskedPlanes), InputError);
   EXPECT_FALSE(fs::exists(output));
   ParticleSolidJob unwritable = jobFor("coins", 32, "/proc/solidtex/out.vdb");
   EXPECT_THROW(runParticleSolid(unwritable), InputError);

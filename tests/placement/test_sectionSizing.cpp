@@ -64,7 +64,7 @@ TEST(SectionKernel, LeavesOutOnlyClassesThePhotoHardlyShows) {
   classes.edges = {10, 20, 40};
   std::vector<SectionSample> samples;
   for (int i = 0; i < 30; ++i) {
-    samples.push_back({0, i % 3 == 0 ? 15.0 : 5.0, 2, 20});  // a third at or above minArea 10
+    samples.push_back({0, i % 3 == 0 ? 15.0 : 5.0, 2, 20});   // a third at or above minArea 10
     samples.push_back({1, i % 10 == 0 ? 30.0 : 5.0, 4, 80});  // a tenth
   }
   const Eigen::MatrixXd kernel = sectionKernel(samples, classes, 10, 1);
