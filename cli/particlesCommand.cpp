@@ -112,26 +112,27 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                     "No progress line (and, on large volumes, no timing of the placement on a small block "
                     "first for its time left)");
   addSegmentationOptions(*command, job->segmentation);
-  return
-      [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing, threads] {
-        job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
-        job->placer = parsePlacerKind(*placer);
-        job->sizing = parseSizing(*sizing);
-        job->arrangement = parseArrangement(*arrangement);
-        job->boundary = parseBoundary(*boundary);
-        job->matrix = parseTexture("--matrix", *matrix);
-        job->particleTexture = parseTexture("--particle-texture", *particleTexture);
-        job->smoothing = parseSmoothing(*smoothing);
-        const ThreadLimit limit(threadsPerProcess(*threads));
-        const auto report = runParticleSolid(*job);
-        if (launchedAs().rank != 0) return 0;
-        const auto& volume = report["volume"];
-        std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
-                  << volume["volume_fraction"].get<double>() << " (photo "
-                  << volume["area_fraction"].get<double>() << "), "
-                  << volume["stop_reason"].get<std::string>() << '\n';
-        return 0;
-      };
+  return [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing,
+          threads] {
+    job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
+    job->placer = parsePlacerKind(*placer);
+    job->sizing = parseSizing(*sizing);
+    job->arrangement = parseArrangement(*arrangement);
+    job->boundary = parseBoundary(*boundary);
+    job->matrix = parseTexture("--matrix", *matrix);
+    job->particleTexture = parseTexture("--particle-texture", *particleTexture);
+    job->smoothing = parseSmoothing(*smoothing);
+    const ThreadLimit limit(threadsPerProcess(*threads));
+    const auto report = runParticleSolid(*job);
+    if (launchedAs().rank != 0) return 0;
+    const auto& volume = report["volume"];
+    const bool planes = volume.contains("target_fraction");
+    std::cout << job->output << ": " << volume["particles"] << " particles, volume fraction "
+              << volume["volume_fraction"].get<double>() << (planes ? " (three photos' mean " : " (photo ")
+              << volume[planes ? "target_fraction" : "area_fraction"].get<double>() << "), "
+              << volume["stop_reason"].get<std::string>() << '\n';
+    return 0;
+  };
 }
 
 }  // namespace solidtex::cli

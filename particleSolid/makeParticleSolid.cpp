@@ -280,6 +280,11 @@ const PlacementResult& ParticleSolidBuilder::place() {
   placement.periodic = periodic;
   if (margin > 0) placement.counted = Box::at({margin, margin, margin}, dims);
   placement.voxelsPerPixel = solid_.voxelsPerPixel;
+  if (!solid_.planeStats.empty()) {  // each plane's photo estimates the volume fraction
+    double sum = stats.areaFraction;
+    for (const ExemplarStats& plane : solid_.planeStats) sum += plane.areaFraction;
+    placement.volumeFraction = sum / double(solid_.planeStats.size() + 1);
+  }
   placement.seed = options_.seed;
   placement.arrangement = options_.arrangement;
   if (options_.sizing == Sizing::Sections) {
@@ -298,12 +303,12 @@ const PlacementResult& ParticleSolidBuilder::place() {
     returnFreedMemory();
     solid_.timer.start("placement");
   }
+  const double target = targetFraction(stats, placement);
   placement.progress = [&](double fraction, int count) {
     char line[128];
     std::snprintf(line, sizeof line, "placing particles: %d placed, volume fraction %.3f of %.3f", count,
-                  fraction, stats.areaFraction);
-    report(progress_, line,
-           timeline && stats.areaFraction > 0 ? timeline->timeShare(fraction / stats.areaFraction) : -1);
+                  fraction, target);
+    report(progress_, line, timeline && target > 0 ? timeline->timeShare(fraction / target) : -1);
   };
   if (options_.brickEdge > 0) {
     solid_.bricks = placeInBricks(

@@ -66,8 +66,9 @@ PlacementTimeline timePlacement(const ExemplarStats& stats, const ParticleFactor
   const Clock::time_point start = Clock::now();
   std::vector<std::pair<double, double>> samples;
   options.progressEvery = 1;
+  const double target = targetFraction(stats, options);
   options.progress = [&](double fraction, int) {
-    samples.emplace_back(stats.areaFraction > 0 ? fraction / stats.areaFraction : 1,
+    samples.emplace_back(target > 0 ? fraction / target : 1,
                          std::chrono::duration<double>(Clock::now() - start).count());
   };
   placeLargestFirst(stats, factory, *field, options);

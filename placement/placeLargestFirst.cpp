@@ -259,7 +259,7 @@ public:
         counted_(options.counted.value_or(Box::of(options.dims))),
         idsBox_(options.idsEverywhere ? Box::of(options.dims) : counted_),
         fillVoxels_(options.ownVoxels.value_or(counted_.dims().count())),
-        targetVoxels_(std::ceil(std::clamp(stats.areaFraction, 0.0, 1.0) * double(fillVoxels_))),
+        targetVoxels_(std::ceil(std::clamp(targetFraction(stats, options), 0.0, 1.0) * double(fillVoxels_))),
         occupied_(options.dims.count()),
         tried_(options.dims.count()) {
     result_.dims = options.dims;
@@ -291,7 +291,7 @@ public:
     }
     char reason[96];
     std::snprintf(reason, sizeof reason, "no bin fits any more (fraction %.3f of %.3f)", fraction(),
-                  stats_.areaFraction);
+                  targetFraction(stats_, options_));
     return finish(reason);
   }
 
@@ -603,6 +603,10 @@ std::vector<PlacementPilot> placementPilots(const ExemplarStats& stats, const Pa
         pilotOf(plan, pairsPerBin(stats, plan.photoShares ? std::vector<double>{} : options.particleWeights),
                 factory, options.seed));
   return pilots;
+}
+
+double targetFraction(const ExemplarStats& stats, const PlacementOptions& options) {
+  return options.volumeFraction >= 0 ? options.volumeFraction : stats.areaFraction;
 }
 
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,

@@ -76,6 +76,9 @@ struct PlacementOptions {
   /// bin that holds much of the volume in several rounds of a part each.
   double firstPassShare = 0.85;
   double voxelsPerPixel = 1;  ///< photo pixels to voxels
+  /// The volume fraction to fill; below 0: the photo's area fraction. Photos of three planes each
+  /// estimate it: their mean is the better estimate.
+  double volumeFraction = -1;
   std::uint64_t seed = 1;
   int candidatesPerTry = 256;  ///< best-fit spots checked voxel by voxel before a (w,h) pair is rejected
   Arrangement arrangement = Arrangement::Uniform;
@@ -129,6 +132,9 @@ std::array<double, 10> firstPhaseBinShares(const ExemplarStats& stats, const Pla
 /// The pilots placeLargestFirst makes for each phase it may go through, from options' sizes and seed.
 std::vector<PlacementPilot> placementPilots(const ExemplarStats& stats, const ParticleFactory& factory,
                                             const PlacementOptions& options);
+
+/// The volume fraction a placement fills: options.volumeFraction, or the photo's area fraction.
+double targetFraction(const ExemplarStats& stats, const PlacementOptions& options);
 
 /// Places particles one by one, largest area bin first, each at a spot of `field` that holds it
 /// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached. When nothing

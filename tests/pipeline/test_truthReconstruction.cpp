@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common/Error.h"
+#include "io/vdbIO.h"
 #include "pipeline/compareJob.h"
 #include "pipeline/particleSolidJob.h"
 #include "pipeline/truthJob.h"
@@ -116,6 +117,14 @@ TEST(AnisotropicTruth, ThreePhotosGiveEachPlanesSections) {
     return job.output;
   };
   const std::string three = solidFrom(true), one = solidFrom(false);
+  // The xy photo holds 0.247 of particle area, the xz and yz 0.191 and 0.169: their mean is the
+  // truth's volume fraction (0.200) within 0.01, and so is the solid's.
+  const auto fractionOf = [](const std::string& path) {
+    return std::stod(readVdb(path).metadata.at("volume_fraction"));
+  };
+  const double truthFraction = fractionOf((dir / "truth.vdb").string());
+  EXPECT_NEAR(fractionOf(three), truthFraction, 0.02);
+  EXPECT_GT(std::abs(fractionOf(one) - truthFraction), 0.03);
   const auto compared = [&](const std::string& solid, const char* plane) {
     CompareJob compare;
     compare.photo =
