@@ -76,7 +76,8 @@ Action addCompareCommand(CLI::App& app) {
   command
       ->add_option("--plane", *plane,
                    "Particles: cut only the axis sections of this plane (xy, xz or yz) and no oblique ones, "
-                   "for the photo of that plane of an anisotropic material")
+                   "for the photo of that plane of an anisotropic material (no materials descriptors, which "
+                   "average every axis)")
       ->check(CLI::IsMember({"xy", "xz", "yz"}));
   command->add_option("--seed", job->sections.seed, "Seed for the planes and patches")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");

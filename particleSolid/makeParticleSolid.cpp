@@ -229,6 +229,7 @@ void ParticleSolidBuilder::analyzePlanes(const cv::Mat& xzSrgb, const std::strin
     return photo.size() == photo_.size() && photo.type() == photo_.type() &&
            cv::norm(photo, photo_, cv::NORM_INF) == 0;
   };
+  if (factory_) throw std::logic_error("analyzePlanes after makeParticles");
   if (isTheXyPhoto(xzSrgb) && isTheXyPhoto(yzSrgb)) return;
   if (options_.segmentation.maskPath || !options_.segmentation.mask.empty())
     throw OptionError("--mask segments one photo: give it without --photo-xz and --photo-yz");

@@ -127,7 +127,7 @@ public:
                      const std::string& yzName);
   /// Builds the hull shapes and fits the smoothing and the section sizing.
   void makeParticles();
-  /// Places particles until the photo's area fraction is met or nothing more fits.
+  /// Places particles until the photo's area fraction (three photos: their mean) is met or nothing more fits.
   const PlacementResult& place();
   /// Textures the matrix and the particles, paints the volume and meshes it when asked.
   ParticleSolid finish();

@@ -131,7 +131,7 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
                            {"boundary", boundaryName(options.boundary)},
                            {"matrix", textureJson(solid.matrix)},
                            {"particle_texture", textureJson(solid.particleTexture)},
-                           {"views", options.particles.views},
+                           {"views", solid.planeStats.empty() ? options.particles.views : 3},
                            {"photo", toJson(solid.stats)},
                            {"volume", placementJson(solid.placement, solid.stats, solid.voxelsPerPixel)}};
   if (solid.planeStats.size() == 2) {

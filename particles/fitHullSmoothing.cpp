@@ -32,9 +32,10 @@ ShapeColumns photoShapes(const ExemplarStats& stats, double voxelsPerPixel) {
   return out;
 }
 
-// The shape's voxels in layer `layer` across `axis`, as pixels. The shapes are randomly turned
-// (unless aligned), so an axis-aligned cut is a random section, and it is sampled on the voxel grid as the
-// photo's pixels are (an oblique sampling grid would add its own jagged edges).
+// The shape's voxels in layer `layer` across `axis`, as pixels. The shapes are randomly turned, so
+// an axis-aligned cut is a random section (aligned ones are cut across z, as their xy photo shows them), and
+// it is sampled on the voxel grid as the photo's pixels are (an oblique sampling grid would add its own
+// jagged edges).
 std::vector<cv::Point> layerPixels(const VoxelShape& shape, int axis, int layer) {
   std::vector<cv::Point> pixels;
   const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};

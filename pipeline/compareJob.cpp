@@ -234,6 +234,11 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
     throw OptionError("--axis-planes must be in [1, 4096]");
   if (job.sections.obliquePlanes < 0 || job.sections.obliquePlanes > 100000)
     throw OptionError("--oblique-planes must be in [0, 100000]");
+  if (job.sections.planeAxis < -1 || job.sections.planeAxis > 2)
+    throw OptionError("the plane's axis must be 0 (yz), 1 (xz) or 2 (xy), or -1 for all");
+  // The descriptors average sections of every axis, and the seams lie across every axis too.
+  if (job.sections.planeAxis >= 0 && ((job.measures && job.measures->any()) || job.brickEdge > 0))
+    throw OptionError("--plane compares one plane's sections: give --measures none and no --bricks with it");
   if (volume.particleId.empty())
     throw InputError(job.volume + " has no particle_id grid: not a particle solid");
   const ExemplarStats stats = analyzeExemplar(photo, job.photo, job.segmentation);
@@ -307,6 +312,7 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
                          scale, sections, sectionOptions, diameter, data.truthVolumes);
   MaterialsOptions materials = job.materials;
   if (job.measures) materials.measures = *job.measures;
+  if (job.sections.planeAxis >= 0) materials.measures = parseMeasureSelection("none");
   if (materials.measures.any()) {
     const auto boundary = volume.metadata.find("boundary");
     materials.periodic = boundary != volume.metadata.end() && boundary->second == "periodic";
@@ -350,6 +356,7 @@ cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const 
 nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar, const SolidVolume& volume,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
+  if (job.sections.planeAxis >= 0) throw OptionError("--plane is for particle solids");
   if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
   if (job.measures && job.measures->any() && !job.measuresClasses())
     throw OptionError(

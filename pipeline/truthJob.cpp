@@ -15,16 +15,13 @@ namespace {
 double sectionAreaFraction(const SolidVolume& volume, int plane) {
   const Dims& d = volume.dims;
   const int edges[3] = {d.x, d.y, d.z};
-  std::size_t filled = 0, all = 0;
-  for (int z = 0; z < d.z; ++z)
-    for (int y = 0; y < d.y; ++y)
-      for (int x = 0; x < d.x; ++x) {
-        const int at[3] = {x, y, z};
-        if (at[plane] != edges[plane] / 2) continue;
-        filled += volume.particleId[d.index(x, y, z)] > 0;
-        ++all;
-      }
-  return double(filled) / double(all);
+  const int a = plane == 0 ? 1 : 0, b = plane == 2 ? 1 : 2;
+  std::size_t filled = 0;
+  int at[3];
+  at[plane] = edges[plane] / 2;
+  for (at[b] = 0; at[b] < edges[b]; ++at[b])
+    for (at[a] = 0; at[a] < edges[a]; ++at[a]) filled += volume.particleId[d.index(at[0], at[1], at[2])] > 0;
+  return double(filled) / (double(edges[a]) * double(edges[b]));
 }
 
 nlohmann::json optionsJson(const ParticleTruthOptions& options) {

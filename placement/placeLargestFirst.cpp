@@ -1,5 +1,5 @@
 // Paper 3.8: particles are made and placed one by one, largest area bin first, at best-fit spots of
-// the spaciousness field, until the volume fraction reaches the photo's area fraction.
+// the spaciousness field, until the volume fraction reaches the target (the photo's area fraction).
 #include "placement/placeLargestFirst.h"
 
 #include <algorithm>
@@ -279,7 +279,7 @@ public:
   }
 
   PlacementResult run() {
-    if (targetVoxels_ <= 0) return finish("the photo's area fraction is 0: nothing to place");
+    if (targetVoxels_ <= 0) return finish("the fraction to fill is 0: nothing to place");
     if (const std::optional<int> smallest = options_.firstPassDownTo) {
       startPhase(phasePlans(options_).front());
       if (const std::optional<std::string> reason = pass(*smallest)) return finish(*reason);

@@ -137,7 +137,7 @@ std::vector<PlacementPilot> placementPilots(const ExemplarStats& stats, const Pa
 double targetFraction(const ExemplarStats& stats, const PlacementOptions& options);
 
 /// Places particles one by one, largest area bin first, each at a spot of `field` that holds it
-/// (paper 3.7-3.8), until every bin is done or the photo's area fraction is reached. When nothing
+/// (paper 3.7-3.8), until every bin is done or the target fraction (targetFraction) is reached. When nothing
 /// fits before that, the photo's sizes are tried again smaller (up to three times 0.85).
 /// Particles never overlap and never cross the walls; in a periodic volume they cross the faces.
 PlacementResult placeLargestFirst(const ExemplarStats& stats, const ParticleFactory& factory,

@@ -49,7 +49,10 @@ SectionComparison compareSections(const SectionStatistics& reference, const Sect
   c.solidityKs = ksStatistic(r.solidity, s.solidity);
   c.roundnessKs = ksStatistic(r.roundness, s.roundness);
   c.aspectKs = ksStatistic(r.aspect, s.aspect);
-  c.orientationKs = kuiperStatistic(orientationSteps(r.orientation), orientationSteps(s.orientation));
+  // Round sections on both sides have no orientation to differ in.
+  c.orientationKs = r.orientation.empty() && s.orientation.empty()
+                        ? 0
+                        : kuiperStatistic(orientationSteps(r.orientation), orientationSteps(s.orientation));
   c.shapeKsCritical = ksCritical95(r.solidity.size(), s.solidity.size());
   c.windowSpreadRatio = c.reference.windowSpread > 0 ? c.solid.windowSpread / c.reference.windowSpread : 0;
   c.neighbourKs = ksStatistic(reference.neighbourDistances, solid.neighbourDistances);

@@ -204,6 +204,7 @@ TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
       {"truth -o OUT/t --dims 64 64 1", "--dims"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --smoothing 0.9", "--smoothing"},
       {"compare IN/coins.png IN/good.vdb --plane zx", "--plane"},
+      {"compare IN/coins.png IN/good.vdb --plane xy --measures s2", "--plane"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --scale 1e-300", "--scale"},
       {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --jitter 5", "--jitter"},
       {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --exclusion -1", "--exclusion"},
