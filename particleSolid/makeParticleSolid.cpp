@@ -234,8 +234,9 @@ void ParticleSolidBuilder::analyzePlanes(const cv::Mat& xzSrgb, const std::strin
   if (options_.segmentation.maskPath || !options_.segmentation.mask.empty())
     throw OptionError("--mask segments one photo: give it without --photo-xz and --photo-yz");
   report(progress_, "segmenting the xz and yz photos");
-  solid_.planeStats = {analyzeExemplar(xzSrgb, xzName, options_.segmentation),
-                       analyzeExemplar(yzSrgb, yzName, options_.segmentation)};
+  const ExemplarStats xz = analyzeExemplar(xzSrgb, xzName, options_.segmentation);
+  const bool oneForBoth = xzSrgb.data == yzSrgb.data && xzSrgb.size() == yzSrgb.size();
+  solid_.planeStats = {xz, oneForBoth ? xz : analyzeExemplar(yzSrgb, yzName, options_.segmentation)};
 }
 
 int ParticleSolidBuilder::largestSide() const {
