@@ -52,7 +52,8 @@ std::vector<int> contourSources(const ExemplarStats& stats) {
     if (!p.border) inner.push_back(i);
   }
   if (all.empty())
-    throw InputError("no particle contour of " + (stats.name.empty() ? std::string("the photo") : stats.name) +
+    throw InputError("no particle contour of " +
+                     (stats.name.empty() ? std::string("the photo") : stats.name) +
                      " encloses an area: cannot build particle shapes");
   return inner.empty() ? all : inner;
 }
