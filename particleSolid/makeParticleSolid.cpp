@@ -178,6 +178,12 @@ int openBoundaryMargin(int largestSide, double particleScale) {
   return int(std::ceil(largestSide * particleScale / 2));
 }
 
+double targetVolumeFraction(const ParticleSolid& solid) {
+  double sum = solid.stats.areaFraction;
+  for (const ExemplarStats& plane : solid.planeStats) sum += plane.areaFraction;
+  return sum / double(solid.planeStats.size() + 1);
+}
+
 void checkParticleSolidOptions(const ParticleSolidOptions& options) {
   for (int edge : {options.dims.x, options.dims.y, options.dims.z})
     if (edge < 8 || edge > kMaxVolumeEdge)
@@ -282,11 +288,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
   placement.periodic = periodic;
   if (margin > 0) placement.counted = Box::at({margin, margin, margin}, dims);
   placement.voxelsPerPixel = solid_.voxelsPerPixel;
-  if (!solid_.planeStats.empty()) {  // each plane's photo estimates the volume fraction
-    double sum = stats.areaFraction;
-    for (const ExemplarStats& plane : solid_.planeStats) sum += plane.areaFraction;
-    placement.volumeFraction = sum / double(solid_.planeStats.size() + 1);
-  }
+  if (!solid_.planeStats.empty()) placement.volumeFraction = targetVolumeFraction(solid_);
   placement.seed = options_.seed;
   placement.arrangement = options_.arrangement;
   if (options_.sizing == Sizing::Sections) {

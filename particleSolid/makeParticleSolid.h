@@ -104,6 +104,10 @@ struct ParticleSolid {
   double memoryEstimate = 0;  ///< bytes: the peak particleSolidPeakBytes expected, checked before placing
 };
 
+/// The volume fraction the solid fills: the photo's area fraction, or with the planes' photos the
+/// mean of the three (each is one section and estimates it).
+double targetVolumeFraction(const ParticleSolid& solid);
+
 /// Refuses (OptionError) options out of range: the volume's edges, the scale, views and shapes.
 void checkParticleSolidOptions(const ParticleSolidOptions& options);
 

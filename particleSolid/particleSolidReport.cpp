@@ -137,8 +137,7 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
   if (solid.planeStats.size() == 2) {
     report["photo_xz"] = toJson(solid.planeStats[0]);
     report["photo_yz"] = toJson(solid.planeStats[1]);
-    report["volume"]["target_fraction"] =
-        (solid.stats.areaFraction + solid.planeStats[0].areaFraction + solid.planeStats[1].areaFraction) / 3;
+    report["volume"]["target_fraction"] = targetVolumeFraction(solid);
   }
   if (solid.bricks)
     report["bricks"] = bricksJson(*solid.bricks, options.brickEdge, std::max(1, options.brickTeam.size));
