@@ -7,6 +7,7 @@
 
 #include "io/writeVolumeExports.h"
 #include "segmentation/analyzeExemplar.h"
+#include "segmentation/particlePhases.h"
 
 namespace solidtex::cli {
 
@@ -24,6 +25,9 @@ Action addTruthCommand(CLI::App& app);
 
 /// --mask, --invert, --no-split, --min-area: shared by every command that reads a particle photo.
 void addSegmentationOptions(CLI::App& command, SegmentationOptions& options);
+
+/// --phases and --phase-mask: kinds of particle (PhaseOptions).
+void addPhaseOptions(CLI::App& command, PhaseOptions& options);
 
 /// --tiff, --npy, --vti: shared by every command that writes a volume.
 void addExportOptions(CLI::App& command, VolumeExports& exports);

@@ -112,6 +112,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
                     "No progress line (and, on large volumes, no timing of the placement on a small block "
                     "first for its time left)");
   addSegmentationOptions(*command, job->segmentation);
+  addPhaseOptions(*command, job->phases);
   return [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing,
           threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};

@@ -24,4 +24,40 @@ void addSegmentationOptions(CLI::App& command, SegmentationOptions& options) {
       ->check(between(0, double(kMaxPhotoSide) * kMaxPhotoSide));
 }
 
+namespace {
+
+// 1 to 8, or 0 for "auto"; -1 for anything else.
+int phaseCount(const std::string& value) {
+  if (value == "auto") return kAutoPhases;
+  std::size_t used = 0;
+  int count = -1;
+  try {
+    count = std::stoi(value, &used);
+  } catch (const std::exception&) {
+    return -1;
+  }
+  return used == value.size() && count >= 1 && count <= kMaxPhases ? count : -1;
+}
+
+}  // namespace
+
+void addPhaseOptions(CLI::App& command, PhaseOptions& options) {
+  command
+      .add_option_function<std::string>(
+          "--phases", [&options](const std::string& value) { options.phases = phaseCount(value); },
+          "Kinds of particle, sorted by colour (k-means in CIE L*a*b*): a count from 1 to 8, or auto (the "
+          "count the colours' BIC chooses); each kind gets its own sizes, shapes, colours and share, and "
+          "the solid a phase grid")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            return phaseCount(value) < 0 ? "must be auto or a count from 1 to 8, got " + value
+                                         : std::string();
+          },
+          ""))
+      ->type_name("K|auto");
+  command.add_option("--phase-mask", options.maskPath,
+                     "An image of the photo's phases, one per distinct value: each particle takes the value "
+                     "under most of it (at most --phases of them)");
+}
+
 }  // namespace solidtex::cli

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/optionChecks.h"
+#include "common/Error.h"
 #include "pipeline/truthJob.h"
 
 namespace solidtex::cli {
@@ -38,6 +39,14 @@ Action addTruthCommand(CLI::App& app) {
   command->add_option("--large-share", t.classes[1].share, "Share of large particles by number (0-1)")
       ->check(between(0, 1))
       ->capture_default_str();
+  auto medium = std::make_shared<ParticleClass>(ParticleClass{10, 0.2, 0, {0.35f, 0.75f, 0.30f}});
+  command
+      ->add_option("--medium-share", medium->share,
+                   "Share by number of a third, green class between the two (0 = none), taken from the small")
+      ->check(between(0, 1))
+      ->capture_default_str();
+  command->add_option("--medium-radius", medium->meanRadius, "Median radius of the medium class, voxels")
+      ->capture_default_str();
   auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
   command->add_option("--spread", *spread, "Standard deviation of log radius (both classes, 0-1)")
       ->check(between(0, 1))
@@ -62,12 +71,15 @@ Action addTruthCommand(CLI::App& app) {
   command->add_option("--noise", t.noise, "Pixel noise of the photo (sRGB standard deviation)")
       ->capture_default_str();
   command->add_option("--seed", t.seed, "Random seed: same seed, same truth")->capture_default_str();
-  return [job, dims, spread, shape] {
+  return [job, dims, spread, shape, medium] {
     ParticleTruthOptions& t = job->truth;
     t.shape = parseTruthShape(*shape);
     t.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
-    t.classes[0].radiusSpread = t.classes[1].radiusSpread = *spread;
-    t.classes[0].share = 1 - t.classes[1].share;
+    t.classes[0].radiusSpread = t.classes[1].radiusSpread = medium->radiusSpread = *spread;
+    t.classes[0].share = 1 - t.classes[1].share - medium->share;
+    if (t.classes[0].share < 0)
+      throw OptionError("--large-share and --medium-share must add up to at most 1");
+    t.classes.insert(t.classes.begin() + 1, *medium);
     std::erase_if(t.classes, [](const ParticleClass& c) { return c.share <= 0; });
     const auto report = runTruth(*job);
     std::cout << job->folder << ": " << report["particles"] << ' ' << *shape << "s, volume fraction "

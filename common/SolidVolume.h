@@ -24,13 +24,16 @@ public:
 /// A solid texture in dense working form, x fastest (Dims::index). Written to .vdb (docs/exports.md) as
 /// `density` (FloatGrid, fog), `color` and `Cd` (Vec3SGrid, linear RGB, active over the whole box;
 /// left out when there are none, as for a solid made from a density volume), `particle_id` (Int32Grid),
-/// `source_position` and `source` (Vec3SGrid) when present.
+/// `phase` (Int32Grid), `source_position` and `source` (Vec3SGrid) when present.
 struct SolidVolume {
   Dims dims;
   std::vector<float> density;  ///< dims.count(); empty: 1 on particles, or everywhere without them
   std::vector<Rgb> color;      ///< dims.count(), linear RGB in [0,1]; or empty, painted by `coloring`
   std::shared_ptr<const VolumeColoring> coloring;  ///< with particleId and no `color`: the colours
   std::vector<std::int32_t> particleId;            ///< dims.count() or empty; 0 background, 1..P particles
+  /// Per particle id - 1: its phase, 0..K-1 (a material with several kinds of particle); empty: one.
+  /// Written as the `phase` grid (Int32Grid: 0 matrix, 1..K the phases, on the particles' voxels).
+  std::vector<std::uint8_t> particlePhase;
   std::vector<std::array<float, 2>>
       sourcePosition;  ///< dims.count() or empty; exemplar pixel (x, y) each voxel copies
   std::vector<std::array<float, 3>> sourceVoxel;  ///< dims.count() or empty; exemplar voxel each voxel copies
@@ -46,6 +49,10 @@ struct SolidVolume {
     return color.empty() ? coloring->at(x, y, z, particleId[i]) : color[i];
   }
 };
+
+/// Every voxel's phase from the particle ids and their phases: 0 matrix, 1..K (dims.count(), x
+/// fastest); empty when the volume has one phase.
+std::vector<std::uint8_t> phaseGrid(const SolidVolume& volume);
 
 /// Paints a volume's `coloring` into its dense `color` (for exports and numpy arrays); nothing when
 /// it is dense already.

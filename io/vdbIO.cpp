@@ -148,6 +148,17 @@ io::detail::GridGroup colorGrids(SolidVolume& volume, const openvdb::math::Trans
   return group;
 }
 
+// The particles' voxels (the ids' active ones) hold their phase + 1; the matrix is inactive 0.
+openvdb::Int32Grid::Ptr phaseGridOf(const openvdb::Int32Grid& ids, const std::vector<std::uint8_t>& phaseOf) {
+  auto phase = ids.deepCopy();
+  phase->setName("phase");
+  for (auto it = phase->tree().beginValueOn(); it; ++it) {
+    const std::int32_t id = *it;
+    it.setValue(id > 0 && std::size_t(id) <= phaseOf.size() ? phaseOf[std::size_t(id) - 1] + 1 : 0);
+  }
+  return phase;
+}
+
 openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
                                       const openvdb::math::Transform::Ptr& xform) {
   openvdb::Int32Grid::Ptr ids;
@@ -155,7 +166,9 @@ openvdb::GridPtrVec densityAndIdGrids(SolidVolume& volume, bool hasColor,
     ids = sparseFrom<openvdb::Int32Grid>(volume.dims, originOf(volume), volume.particleId, 0, "particle_id",
                                          xform);
   auto density = densityGrid(volume, hasColor, ids, xform);
-  return ids ? openvdb::GridPtrVec{density, ids} : openvdb::GridPtrVec{density};
+  if (!ids) return {density};
+  if (volume.particlePhase.empty()) return {density, ids};
+  return {density, ids, phaseGridOf(*ids, volume.particlePhase)};
 }
 
 }  // namespace
@@ -314,8 +327,9 @@ std::uint64_t activeVoxelCount(const io::detail::VdbContents& contents, const st
 io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& options) {
   if (options.density && options.color && options.particleId) return io::detail::readVdbGrids(path);
   std::vector<std::string> names;
-  for (const auto& [wanted, name] : {std::pair{options.density, "density"}, std::pair{options.color, "color"},
-                                     std::pair{options.particleId, "particle_id"}})
+  for (const auto& [wanted, name] :
+       {std::pair{options.density, "density"}, std::pair{options.color, "color"},
+        std::pair{options.particleId, "particle_id"}, std::pair{options.particleId, "phase"}})
     if (wanted) names.emplace_back(name);
   io::detail::VdbContents contents = io::detail::readVdbGrids(path, names);
   const std::size_t wanted = names.size();
@@ -324,6 +338,23 @@ io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& 
   if (names.size() == wanted) return contents;
   contents = {};  // its trees are read again
   return io::detail::readVdbGrids(path, names);
+}
+
+// Each particle's phase (phase grid value - 1) from the voxels the two grids share.
+std::vector<std::uint8_t> particlePhasesOf(const openvdb::Int32Grid& ids, const openvdb::Int32Grid& phase,
+                                           const std::string& path) {
+  std::vector<std::uint8_t> out;
+  const auto idAt = ids.getConstAccessor();
+  for (auto it = phase.cbeginValueOn(); it; ++it) {
+    const std::int32_t id = idAt.getValue(it.getCoord()), value = *it;
+    if (id <= 0) continue;
+    if (value < 1 || value > 255)
+      throw InputError("cannot read " + path + ": its phase grid holds " + std::to_string(value) +
+                       " on a particle (phases are 1 to 255)");
+    if (std::size_t(id) > out.size()) out.resize(std::size_t(id), 0);
+    out[std::size_t(id) - 1] = std::uint8_t(value - 1);
+  }
+  return out;
 }
 
 // Copies a grid into `out` over the box and lets its tree go.
@@ -346,6 +377,8 @@ SolidVolume readVdb(const std::string& path, const VdbReadOptions& options) {
   auto density = typedGrid<openvdb::FloatGrid>(contents, path, "density", "float");
   auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
   auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
+  if (const auto phase = typedGrid<openvdb::Int32Grid>(contents, path, "phase", "int32"); phase && ids)
+    volume.particlePhase = particlePhasesOf(*ids, *phase, path);
   contents.grids.clear();
   // Recorded bounds can be edited apart from the values: ids outside them would be dropped unseen.
   const bool recordedBox = unreadGrid(contents, "density") || unreadGrid(contents, "color");

@@ -34,6 +34,8 @@ void writeTiffs(OutputFiles& outputs, const std::string& folder, const SolidVolu
   };
   if (!volume.color.empty()) write("color.tif", 3, StackSample::UInt8, srgbBytes(volume.color).data());
   if (!volume.particleId.empty()) write("particle_id.tif", 1, StackSample::Int32, volume.particleId.data());
+  if (const std::vector<std::uint8_t> phase = phaseGrid(volume); !phase.empty())
+    write("phase.tif", 1, StackSample::UInt8, phase.data());
   if (!volume.density.empty()) write("density.tif", 1, StackSample::Float32, volume.density.data());
 }
 
@@ -42,20 +44,23 @@ void writeNpys(OutputFiles& outputs, const std::string& folder, const SolidVolum
   const Dims& d = volume.dims;
   const std::vector<std::size_t> zyx{std::size_t(d.z), std::size_t(d.y), std::size_t(d.x)};
   auto write = [&](const std::string& name, const std::string& descr, std::vector<std::size_t> shape,
-                   const void* data) {
+                   const void* data, std::size_t itemBytes = 4) {
     const std::string path = inFolder(folder, name);
-    outputs.write(path, [&](const std::string& file) { writeNpy(file, descr, shape, data, 4); });
+    outputs.write(path, [&](const std::string& file) { writeNpy(file, descr, shape, data, itemBytes); });
     written.push_back(path);
   };
   if (!volume.color.empty()) write("color.npy", "<f4", {zyx[0], zyx[1], zyx[2], 3}, volume.color.data());
   if (!volume.particleId.empty()) write("particle_id.npy", "<i4", zyx, volume.particleId.data());
+  if (const std::vector<std::uint8_t> phase = phaseGrid(volume); !phase.empty())
+    write("phase.npy", "|u1", zyx, phase.data(), 1);
   if (!volume.density.empty()) write("density.npy", "<f4", zyx, volume.density.data());
 }
 
-std::vector<VtiArray> vtiArrays(const SolidVolume& volume) {
+std::vector<VtiArray> vtiArrays(const SolidVolume& volume, const std::vector<std::uint8_t>& phase) {
   std::vector<VtiArray> arrays;
   if (!volume.color.empty()) arrays.push_back({"color", "Float32", 3, 4, volume.color.data()});
   if (!volume.particleId.empty()) arrays.push_back({"particle_id", "Int32", 1, 4, volume.particleId.data()});
+  if (!phase.empty()) arrays.push_back({"phase", "UInt8", 1, 1, phase.data()});
   if (!volume.density.empty()) arrays.push_back({"density", "Float32", 1, 4, volume.density.data()});
   return arrays;
 }
@@ -75,7 +80,8 @@ std::vector<std::string> writeVolumeExports(OutputFiles& outputs, const VolumeEx
   if (exports.npy) writeNpys(outputs, *exports.npy, volume, written);
   if (exports.vti) {
     outputs.write(*exports.vti, [&](const std::string& file) {
-      writeVti(file, volume.dims, volume.origin, 1, vtiArrays(volume));  // the .vdb's own voxel units
+      writeVti(file, volume.dims, volume.origin, 1,
+               vtiArrays(volume, phaseGrid(volume)));  // the .vdb's own voxel units
     });
     written.push_back(*exports.vti);
   }

@@ -15,6 +15,7 @@
 #include "mesh/particleMeshes.h"
 #include "placement/PlacementTimeline.h"
 #include "placement/cropToCountedBox.h"
+#include "placement/phaseShares.h"
 #include "voxel/ParticleColoring.h"
 
 namespace solidtex {
@@ -225,6 +226,11 @@ const ExemplarStats& ParticleSolidBuilder::analyze(const cv::Mat& photoSrgb, con
   solid_.timer.start("analysis");
   report(progress_, "segmenting the photo");
   solid_.stats = analyzeExemplar(photoSrgb, name, options_.segmentation);
+  if (std::optional<ParticlePhases> phases = findPhases(solid_.stats, options_.phases, options_.seed)) {
+    report(progress_, "sorting the particles into phases");
+    assignPhases(solid_.stats, *phases);
+    solid_.phases = std::move(*phases);
+  }
   photo_ = photoSrgb;
   return solid_.stats;
 }
@@ -239,6 +245,10 @@ void ParticleSolidBuilder::analyzePlanes(const cv::Mat& xzSrgb, const std::strin
   if (isTheXyPhoto(xzSrgb) && isTheXyPhoto(yzSrgb)) return;
   if (options_.segmentation.maskPath || !options_.segmentation.mask.empty())
     throw OptionError("--mask segments one photo: give it without --photo-xz and --photo-yz");
+  if (options_.phases.any())
+    throw OptionError(
+        "--phases and --phase-mask sort one photo's particles: give them without --photo-xz "
+        "and --photo-yz");
   report(progress_, "segmenting the xz and yz photos");
   const ExemplarStats xz = analyzeExemplar(xzSrgb, xzName, options_.segmentation);
   const bool oneForBoth = xzSrgb.data == yzSrgb.data && xzSrgb.size() == yzSrgb.size();
@@ -265,8 +275,41 @@ void ParticleSolidBuilder::makeParticles() {
   solid_.sizing = {1, {}, stats.histogram.ratios, 0, {}};
   if (options_.sizing == Sizing::Sections) {
     report(progress_, "sizing particles from their sections");
+    if (stats.phaseCentres.rows > 1) return sizePhases(scale);
     solid_.sizing = fitSectionSizing(stats, *factory_, scale, options_.seed, kSizingBootstraps);
   }
+  solid_.sizing.particleWeights =
+      phaseBalancedWeights(stats, *factory_, std::move(solid_.sizing.particleWeights),
+                           scale * solid_.sizing.sizeFactor, options_.seed);
+}
+
+// Each phase's sections unfold on their own: unfolded together, a phase of large particles takes
+// the small sections of another for its own cuts, and both phases' sizes and shares go wrong.
+void ParticleSolidBuilder::sizePhases(double scale) {
+  const ExemplarStats& stats = solid_.stats;
+  std::vector<double> weights(stats.particles.size(), 0.0);
+  std::vector<double>& factors = solid_.phaseSizeFactors;
+  factors.assign(std::size_t(stats.phaseCentres.rows), 1.0);
+  double worstKs = 0;
+  for (int k = 0; k < stats.phaseCentres.rows; ++k) {
+    std::vector<std::size_t> members;
+    for (std::size_t i = 0; i < stats.particles.size(); ++i)
+      if (stats.particles[i].phase == k) members.push_back(i);
+    const SectionSizing fit = fitSectionSizing(phaseStats(stats, k), *factory_, scale, options_.seed);
+    factors[std::size_t(k)] = fit.sizeFactor;
+    worstKs = std::max(worstKs, fit.predictedKs);
+    for (std::size_t j = 0; j < members.size(); ++j) weights[members[j]] = fit.particleWeights[j];
+  }
+  factory_->setPhaseScales(factors);
+  weights = phaseBalancedWeights(stats, *factory_, std::move(weights), scale, options_.seed);
+  std::array<double, 10> binRatios{};
+  double total = 0;
+  for (std::size_t i : statisticalParticles(stats.particles)) {
+    binRatios[std::size_t(stats.histogram.binOf(stats.particles[i].area))] += weights[i];
+    total += weights[i];
+  }
+  for (double& ratio : binRatios) ratio = total > 0 ? ratio / total : 0;
+  solid_.sizing = {1, std::move(weights), binRatios, worstKs, {}};
 }
 
 const PlacementResult& ParticleSolidBuilder::place() {
@@ -291,7 +334,7 @@ const PlacementResult& ParticleSolidBuilder::place() {
   if (!solid_.planeStats.empty()) placement.volumeFraction = targetVolumeFraction(solid_);
   placement.seed = options_.seed;
   placement.arrangement = options_.arrangement;
-  if (options_.sizing == Sizing::Sections) {
+  if (!solid_.sizing.particleWeights.empty()) {
     placement.particleWeights = solid_.sizing.particleWeights;
     placement.sizeFactor = solid_.sizing.sizeFactor;
   }
@@ -360,6 +403,14 @@ ParticleSolid ParticleSolidBuilder::finish() {
       stats, placement.dims, std::move(paints), scale, options_.seed, options_.boundary == Boundary::Periodic,
       std::move(matrix), std::move(grain));
   placement.ids.clear();
+  if (stats.phaseCentres.rows > 1) {
+    int largestId = 0;
+    for (const PlacedParticle& placed : placement.particles) largestId = std::max(largestId, placed.id);
+    solid_.volume.particlePhase.resize(std::size_t(largestId));
+    for (const PlacedParticle& placed : placement.particles)
+      solid_.volume.particlePhase[std::size_t(placed.id) - 1] =
+          std::uint8_t(stats.particles[std::size_t(placed.source)].phase);
+  }
 
   if (options_.meshes) {
     solid_.timer.start("meshes");

@@ -22,6 +22,7 @@
 #include "placement/sectionSizing.h"
 #include "placement/wholeParticleVolumes.h"
 #include "segmentation/analyzeExemplar.h"
+#include "segmentation/particlePhases.h"
 
 namespace solidtex {
 
@@ -49,6 +50,9 @@ const char* textureName(Texture texture);
 /// Everything that decides a particle solid, apart from the photo.
 struct ParticleSolidOptions {
   SegmentationOptions segmentation;
+  /// Kinds of particle: each phase's particles take its own shapes, sizes and colours, and the
+  /// solid gets a phase per particle (SolidVolume::particlePhase).
+  PhaseOptions phases;
   Dims dims{128, 128, 128};
   double voxelsPerPixel =
       0;  ///< <= 0: 1, or less when the largest particle would exceed a quarter of the volume
@@ -86,12 +90,16 @@ struct TextureChoice {
 
 /// A particle solid and how it was made.
 struct ParticleSolid {
-  ExemplarStats stats;  ///< the photo's segmentation and particle statistics (the xy photo's)
+  ExemplarStats stats;    ///< the photo's segmentation and particle statistics (the xy photo's)
+  ParticlePhases phases;  ///< how its particles were sorted into phases; empty centres: one phase
   /// The xz and yz photos' statistics when the solid is made from three planes' photos; empty else.
   std::vector<ExemplarStats> planeStats;
   double voxelsPerPixel = 1;  ///< the photo's scale in the volume
   SmoothingFit smoothing;
   SectionSizing sizing;
+  /// Of several phases sized from their sections: each one's size factor (ParticleFactory's phase
+  /// scales; `sizing` then holds factor 1 and every phase's weights).
+  std::vector<double> phaseSizeFactors;
   PlacementResult placement;          ///< the placed particles; its ids are moved into `volume`
   WholeParticleVolumes wholeVolumes;  ///< the placed particles' 3D sizes, before the faces cut them
   /// With ParticleSolidOptions::brickEdge: the bricks, how each went, the colours' times. Its
@@ -119,14 +127,14 @@ public:
   /// Checks the options and that the volume fits in memory.
   explicit ParticleSolidBuilder(ParticleSolidOptions options, Progress progress = {});
 
-  /// Segments the photo (CV_32FC3 sRGB in [0, 1], RGB order) and measures its particles; `name`
-  /// labels it in reports and messages.
+  /// Segments the photo (CV_32FC3 sRGB in [0, 1], RGB order), measures its particles and sorts them
+  /// into the phases the options ask for; `name` labels it in reports and messages.
   const ExemplarStats& analyze(const cv::Mat& photoSrgb, const std::string& name);
   /// For a material that differs by direction, after analyze (whose photo is then the xy plane's):
   /// segments the photos of the xz plane (x across, z down) and of the yz plane (y across, z down),
   /// at the xy photo's pixel size; the particles are then aligned (PlanePhotos). Both the xy photo
   /// itself: nothing, and the solid is the one-photo solid, byte for byte. Refuses (OptionError) a
-  /// mask, which segments one photo.
+  /// mask, which segments one photo, and phases, which sort one photo's particles.
   void analyzePlanes(const cv::Mat& xzSrgb, const std::string& xzName, const cv::Mat& yzSrgb,
                      const std::string& yzName);
   /// Builds the hull shapes and fits the smoothing and the section sizing.
@@ -138,6 +146,7 @@ public:
 
 private:
   int largestSide() const;  // pixels: the largest particle box side of every photo
+  void sizePhases(double scale);
 
   ParticleSolidOptions options_;
   Progress progress_;

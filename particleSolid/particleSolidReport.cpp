@@ -88,6 +88,43 @@ nlohmann::json textureJson(const TextureChoice& choice) {
   return json;
 }
 
+nlohmann::json phaseCentresJson(const cv::Mat& centres) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int r = 0; r < centres.rows; ++r)
+    out.push_back({centres.at<float>(r, 0), centres.at<float>(r, 1), centres.at<float>(r, 2)});
+  return out;
+}
+
+// Each phase's colour, share of the photo and of the volume, particles in both.
+nlohmann::json phasesJson(const ParticleSolid& solid) {
+  const ExemplarStats& stats = solid.stats;
+  const int phases = stats.phaseCentres.rows;
+  const std::vector<double> photoFractions = phaseAreaFractions(stats);
+  std::vector<int> photoParticles(std::size_t(phases), 0), placed(std::size_t(phases), 0);
+  std::vector<double> voxels(std::size_t(phases), 0.0);
+  for (const Particle2D& p : stats.particles) ++photoParticles[std::size_t(p.phase)];
+  for (const PlacedParticle& p : solid.placement.particles) {
+    const auto phase = std::size_t(stats.particles[std::size_t(p.source)].phase);
+    ++placed[phase];
+    voxels[phase] += double(p.voxelCount);
+  }
+  const double all = double(solid.placement.counted.dims().count());
+  nlohmann::json classes = nlohmann::json::array();
+  const nlohmann::json centres = phaseCentresJson(stats.phaseCentres);
+  for (std::size_t k = 0; k < std::size_t(phases); ++k)
+    classes.push_back({{"phase", k + 1},
+                       {"lab", centres[k]},
+                       {"photo_particles", photoParticles[k]},
+                       {"area_fraction", photoFractions[k]},
+                       {"particles", placed[k]},
+                       {"volume_fraction", all > 0 ? voxels[k] / all : 0.0}});
+  for (std::size_t k = 0; k < solid.phaseSizeFactors.size(); ++k)
+    classes[k]["size_factor"] = solid.phaseSizeFactors[k];
+  nlohmann::json out = {{"method", solid.phases.method}, {"count", phases}, {"classes", classes}};
+  if (!solid.phases.bic.empty()) out["bic"] = solid.phases.bic;
+  return out;
+}
+
 }  // namespace
 
 std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& solid,
@@ -114,6 +151,8 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
     metadata["exemplar_xz"] = std::filesystem::path(solid.planeStats[0].name).filename().string();
     metadata["exemplar_yz"] = std::filesystem::path(solid.planeStats[1].name).filename().string();
   }
+  if (solid.stats.phaseCentres.rows > 1)
+    metadata["phase_lab"] = phaseCentresJson(solid.stats.phaseCentres).dump();
   const SizingUncertainty& u = solid.sizing.uncertainty;
   if (!u.bandVolumes.empty())
     metadata["particle_volume_cdf_band"] =
@@ -139,6 +178,7 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
     report["photo_yz"] = toJson(solid.planeStats[1]);
     report["volume"]["target_fraction"] = targetVolumeFraction(solid);
   }
+  if (solid.stats.phaseCentres.rows > 1) report["phases"] = phasesJson(solid);
   if (solid.bricks)
     report["bricks"] = bricksJson(*solid.bricks, options.brickEdge, std::max(1, options.brickTeam.size));
   const SectionSizing& sizing = solid.sizing;

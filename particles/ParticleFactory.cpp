@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "particles/rotation.h"
 #include "particles/visualHull.h"
 #include "particles/voxelizeHull.h"
+#include "segmentation/particlePhases.h"
 
 namespace solidtex {
 namespace {
@@ -182,15 +184,17 @@ int drawDepth(const std::vector<SizePair>& pairs, int width, int height, Rng& rn
 }
 
 // A non-border particle (any particle when all touch the border) whose box is nearest to
-// (width, height) in |dw| + |dh|, which is 0 for the photo's own pairs; random among equals.
-int drawSource(const std::vector<Particle2D>& particles, int width, int height, Rng& rng) {
-  const bool anyInner =
-      std::any_of(particles.begin(), particles.end(), [](const Particle2D& p) { return !p.border; });
+// (width, height) in |dw| + |dh|, which is 0 for the photo's own pairs; random among equals; of
+// `phase` alone when it is not negative.
+int drawSource(const std::vector<Particle2D>& particles, int width, int height, Rng& rng, int phase = -1) {
+  const auto candidate = [phase](const Particle2D& p) { return phase < 0 || p.phase == phase; };
+  const bool anyInner = std::any_of(particles.begin(), particles.end(),
+                                    [&](const Particle2D& p) { return !p.border && candidate(p); });
   int best = INT_MAX;
   std::vector<int> ties;
   for (int i = 0; i < int(particles.size()); ++i) {
     const Particle2D& p = particles[std::size_t(i)];
-    if (anyInner && p.border) continue;
+    if (!candidate(p) || (anyInner && p.border)) continue;
     const int distance = std::abs(p.box.width - width) + std::abs(p.box.height - height);
     if (distance < best) ties.clear();
     if (distance <= best) {
@@ -201,19 +205,54 @@ int drawSource(const std::vector<Particle2D>& particles, int width, int height, 
   return ties.empty() ? -1 : ties[uniformIndex(rng, ties.size())];
 }
 
+// Each phase's contour sources (contourSources' rule within the phase; all phases' when it has
+// none of its own); one list when the photo has one phase.
+std::vector<std::vector<int>> phaseSources(const ExemplarStats& stats) {
+  const std::vector<int> all = contourSources(stats);
+  const int phases = std::max(1, stats.phaseCentres.rows);
+  if (phases == 1) return {all};
+  std::vector<std::vector<int>> out(static_cast<std::size_t>(phases));
+  for (int p = 0; p < phases; ++p) {
+    std::vector<Particle2D> own;
+    std::vector<int> index;
+    for (int i = 0; i < int(stats.particles.size()); ++i)
+      if (stats.particles[std::size_t(i)].phase == p)
+        own.push_back(stats.particles[std::size_t(i)]), index.push_back(i);
+    ExemplarStats phase;
+    phase.particles = std::move(own);
+    try {
+      for (int i : contourSources(phase)) out[std::size_t(p)].push_back(index[std::size_t(i)]);
+    } catch (const InputError&) {
+      out[std::size_t(p)] = all;
+    }
+  }
+  return out;
+}
+
+// Each phase's (width, height) pairs; one list when the photo has one phase.
+std::vector<std::vector<SizePair>> phaseSizePairs(const ExemplarStats& stats) {
+  const int phases = std::max(1, stats.phaseCentres.rows);
+  if (phases == 1) return {stats.sizePairs};
+  std::vector<std::vector<SizePair>> out(static_cast<std::size_t>(phases));
+  for (int p = 0; p < phases; ++p) out[std::size_t(p)] = phaseStats(stats, p).sizePairs;
+  return out;
+}
+
 }  // namespace
 
 ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptions& options,
                                  PlanePhotos planes)
     : stats_(stats), planes_(planes), options_(options) {
   checkOptions(options);
-  const std::vector<int> sources = contourSources(stats);
+  const std::vector<std::vector<int>> sources = phaseSources(stats);
   const std::vector<PlaneView> views =
       planes.aligned() ? planeViews(stats, planes) : std::vector<PlaneView>{};
   sharpHulls_.resize(std::size_t(options.shapes));
   hulls_.resize(sharpHulls_.size());
+  phasePairs_ = phaseSizePairs(stats);
   tbb::parallel_for(0, options.shapes, [&](int i) {
-    sharpHulls_[std::size_t(i)] = buildHull(stats, sources, views, options, i);
+    sharpHulls_[std::size_t(i)] =
+        buildHull(stats, sources[std::size_t(i) % sources.size()], views, options, i);
     hulls_[std::size_t(i)] = smoothHull(sharpHulls_[std::size_t(i)], options.smoothing);
   });
 }
@@ -224,7 +263,8 @@ ParticleFactory::ParticleFactory(const ExemplarStats& stats, const ParticleOptio
       planes_(planes),
       options_(options),
       sharpHulls_(std::move(sharpHulls)),
-      hulls_(sharpHulls_.size()) {
+      hulls_(sharpHulls_.size()),
+      phasePairs_(phaseSizePairs(stats)) {
   checkOptions(options);
   tbb::parallel_for(std::size_t(0), hulls_.size(),
                     [&](std::size_t i) { hulls_[i] = smoothHull(sharpHulls_[i], options.smoothing); });
@@ -236,19 +276,48 @@ ParticleFactory ParticleFactory::withSmoothing(const HullSmoothing& smoothing, i
   const std::size_t count =
       maxHulls > 0 ? std::min(sharpHulls_.size(), std::size_t(maxHulls)) : sharpHulls_.size();
   options.shapes = int(count);
-  return ParticleFactory(stats_, options, planes_,
-                         {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
+  ParticleFactory out(stats_, options, planes_,
+                      {sharpHulls_.begin(), sharpHulls_.begin() + std::ptrdiff_t(count)});
+  out.phaseScales_ = phaseScales_;
+  return out;
 }
 
-ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng) const {
+ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng, int phase) const {
+  if (phasePairs_.size() > 1) {
+    // The source first: its phase's particles, not the other phases', tell the depth.
+    const int source = drawSource(stats_.particles, width, height, rng, phase);
+    return {width, height, drawDepth(phasePairs_[std::size_t(phaseOf(source))], width, height, rng), source};
+  }
   const int depth = aligned() ? drawAlignedDepth(planes_, width, height, rng)
                               : drawDepth(stats_.sizePairs, width, height, rng);
   return {width, height, depth, drawSource(stats_.particles, width, height, rng)};
 }
 
-VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng) const {
+void ParticleFactory::setPhaseScales(std::vector<double> scales) {
+  if (scales.size() != phasePairs_.size() ||
+      std::any_of(scales.begin(), scales.end(), [](double s) { return !(s > 0) || !std::isfinite(s); }))
+    throw std::invalid_argument("setPhaseScales: one positive scale per phase");
+  phaseScales_ = std::move(scales);
+}
+
+int ParticleFactory::phaseOf(int source) const {
+  return source < 0 ? 0 : stats_.particles[std::size_t(source)].phase;
+}
+
+VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng, int phase) const {
   checkInterruption();
-  const std::size_t hull = uniformIndex(rng, hulls_.size());
+  if (!phaseScales_.empty()) {
+    const double scale = phaseScales_[std::size_t(phase)];
+    const auto scaled = [&](int side) {
+      return std::clamp(int(std::lround(side * scale)), 1, kMaxParticleSide);
+    };
+    width = scaled(width), height = scaled(height), depth = scaled(depth);
+  }
+  // Hull i was carved from phase i mod K's contours.
+  const std::size_t phases = phasePairs_.size(), p = std::size_t(phase);
+  const std::size_t ofPhase = hulls_.size() > p ? (hulls_.size() - p + phases - 1) / phases : 0;
+  const std::size_t hull =
+      ofPhase > 0 ? p + phases * uniformIndex(rng, ofPhase) : uniformIndex(rng, hulls_.size());
   const Eigen::Matrix3d turn = aligned() ? Eigen::Matrix3d::Identity() : randomRotation(rng);
   VoxelShape shape = voxelize(hulls_[hull], turn, width, height, depth);
   shape.pose.hull = int(hull);

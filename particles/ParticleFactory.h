@@ -48,16 +48,26 @@ public:
   /// width or height with it (paper 3.5); `source` is a particle whose box is (width, height).
   /// A pair equal to (width, height) offers both its values, each with half its count. Sizes that no
   /// pair shares a value with draw from all sides of all pairs; `source` is then the non-border
-  /// particle with the nearest box (|dw| + |dh|), random among equals. Aligned, width is x and
+  /// particle with the nearest box (|dw| + |dh|), random among equals. Of several phases, the
+  /// source is drawn first, among `phase`'s particles (any phase's when it is negative), and the
+  /// depth from its phase's pairs alone. Aligned, width is x and
   /// height y, and the depth (z) is the height of the xz photo's boxes as wide as x and of the yz
   /// photo's as wide as y, by frequency (any of their heights when none is).
-  ParticleSize pickDepth(int width, int height, Rng& rng) const;
+  ParticleSize pickDepth(int width, int height, Rng& rng, int phase = -1) const;
 
   /// A particle from a random pool hull under a random rotation (none when aligned), non-uniformly scaled to
   /// the box (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
   /// which loses the face layers no voxel centre reached (see voxelize), with its pose. Thread-safe.
   /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
-  VoxelShape make(int width, int height, int depth, Rng& rng) const;
+  /// Of several phases (ExemplarStats::phaseCentres), the hull is one carved from `phase`'s contours.
+  VoxelShape make(int width, int height, int depth, Rng& rng, int phase = 0) const;
+
+  /// Each phase's particles made this many times larger than asked (its own size factor, where the
+  /// phases' sections unfold to different factors); one value per phase, all 1 at first.
+  void setPhaseScales(std::vector<double> scales);
+
+  /// The phase of a photo particle (ParticleSize::source); 0 for none.
+  int phaseOf(int source) const;
 
   /// The same pool of hulls smoothed otherwise (from the sharp visual hulls), the first `maxHulls`
   /// of them when positive; the CGAL work is not redone.
@@ -76,8 +86,10 @@ private:
   const ExemplarStats& stats_;
   PlanePhotos planes_;
   ParticleOptions options_;
-  std::vector<HullMesh> sharpHulls_;  ///< the visual hulls (paper 3.4)
-  std::vector<HullMesh> hulls_;       ///< sharpHulls_ smoothed as the options say
+  std::vector<HullMesh> sharpHulls_;               ///< the visual hulls (paper 3.4)
+  std::vector<HullMesh> hulls_;                    ///< sharpHulls_ smoothed as the options say
+  std::vector<std::vector<SizePair>> phasePairs_;  ///< each phase's box sizes (one: the photo's)
+  std::vector<double> phaseScales_;                ///< empty: 1 for every phase
 };
 
 }  // namespace solidtex

@@ -58,9 +58,10 @@ ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& fa
   };
   ShapeColumns out;
   for (int s = 0; s < kShapesPerCandidate && !sources.empty(); ++s) {
-    const cv::Rect& box = stats.particles[sources[uniformIndex(rng, sources.size())]].box;
-    const ParticleSize size = factory.pickDepth(box.width, box.height, rng);
-    const VoxelShape shape = factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng);
+    const Particle2D& source = stats.particles[sources[uniformIndex(rng, sources.size())]];
+    const ParticleSize size = factory.pickDepth(source.box.width, source.box.height, rng, source.phase);
+    const VoxelShape shape = factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng,
+                                          factory.phaseOf(size.source));
     const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
     for (int p = 0; p < kPlanesPerShape; ++p) {
       const int axis = factory.aligned() ? 2 : int(uniformIndex(rng, 3));  // aligned: as the xy photo

@@ -1,10 +1,12 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "segmentation/analyzeExemplar.h"
+#include "segmentation/particlePhases.h"
 
 namespace solidtex {
 
@@ -12,6 +14,8 @@ namespace solidtex {
 struct AnalyzeJob {
   std::string photo;
   SegmentationOptions segmentation;
+  PhaseOptions phases;                ///< kinds of particle, sorted by colour or by a label image
+  std::uint64_t seed = 1;             ///< the k-means' seed
   std::optional<std::string> report;  ///< JSON report path
   std::optional<std::string> labels;  ///< PNG with outlines and ids
 };

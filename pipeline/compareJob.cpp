@@ -17,6 +17,7 @@
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
 #include "pipeline/materialsPlot.h"
+#include "pipeline/phaseComparison.h"
 #include "placement/wholeParticleVolumes.h"
 #include "validation/arrangement.h"
 #include "validation/brickSeams.h"
@@ -299,6 +300,9 @@ nlohmann::json compareParticles(const CompareJob& job, const cv::Mat& photo, con
       {"window_side", sectionOptions.windowSide},
       {"particle_diameter", diameter}};
   report["volume_sample"] = volumeSampleOf(volume, placed.has_value());
+  if (nlohmann::json phases = phaseComparison(stats, volume, job.volume, scale, sectionOptions, diameter);
+      !phases.is_null())
+    report["phases"] = std::move(phases);
   if (placed)
     report["whole_in_block"] = {{"particles", blockVolumes.size()},
                                 {"mean_volume", mean(blockVolumes)},

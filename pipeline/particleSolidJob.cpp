@@ -79,6 +79,7 @@ nlohmann::json runParticleSolid(const ParticleSolidJob& job) {
       for (const auto& plane : {job.photoXz, job.photoYz})
         if (plane) outputs.addInput(*plane);
       if (job.segmentation.maskPath) outputs.addInput(*job.segmentation.maskPath);
+      if (job.phases.maskPath) outputs.addInput(*job.phases.maskPath);
       addVolumeOutputs(outputs, job.output, job.report, job.preview);
       addVolumeExports(outputs, job.exports);
       if (job.meshPath) addParticleMeshes(outputs, "--meshes", *job.meshPath);

@@ -4,9 +4,11 @@
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
+#include "common/srgb.h"
 #include "io/imageIO.h"
 #include "io/vdbIO.h"
 #include "pipeline/jobOutputs.h"
+#include "segmentation/particlePhases.h"
 
 namespace solidtex {
 namespace {
@@ -42,6 +44,18 @@ nlohmann::json optionsJson(const ParticleTruthOptions& options) {
            options.anisotropy.empty() ? nlohmann::json(nullptr) : nlohmann::json(options.anisotropy)}};
 }
 
+// The classes' colours in CIE L*a*b*, as a particle solid's `phase_lab` metadata holds its phases'.
+nlohmann::json classColoursJson(const std::vector<ParticleClass>& classes) {
+  std::vector<cv::Vec3f> linear;
+  for (const ParticleClass& c : classes)
+    linear.emplace_back(srgbToLinear(c.srgb[0]), srgbToLinear(c.srgb[1]), srgbToLinear(c.srgb[2]));
+  const cv::Mat lab = labOfColours(linear);
+  nlohmann::json out = nlohmann::json::array();
+  for (int r = 0; r < lab.rows; ++r)
+    out.push_back({lab.at<float>(r, 0), lab.at<float>(r, 1), lab.at<float>(r, 2)});
+  return out;
+}
+
 }  // namespace
 
 // Peak resident memory per voxel: 30 measured (367 MiB at 256x256x128, less the 130 MiB every run holds).
@@ -54,7 +68,16 @@ nlohmann::json runTruth(const TruthJob& job) {
   ParticleTruth truth = makeParticleTruth(job.truth);
 
   std::vector<int> perClass(job.truth.classes.size(), 0);
-  for (int c : truth.classOf) ++perClass[std::size_t(c)];
+  std::vector<double> classFractions(job.truth.classes.size(), 0.0);
+  for (std::size_t i = 0; i < truth.classOf.size(); ++i) {
+    ++perClass[std::size_t(truth.classOf[i])];
+    classFractions[std::size_t(truth.classOf[i])] += truth.volumes[i] / double(truth.volume.dims.count());
+  }
+  // The classes are the truth's phases, as a particle solid's are: `compare` rates each one.
+  if (job.truth.classes.size() > 1) {
+    truth.volume.particlePhase.assign(truth.classOf.begin(), truth.classOf.end());
+    truth.volume.metadata["phase_lab"] = classColoursJson(job.truth.classes).dump();
+  }
   nlohmann::json report = {
       {"dims", {truth.volume.dims.x, truth.volume.dims.y, truth.volume.dims.z}},
       {"seed", job.truth.seed},
@@ -62,6 +85,7 @@ nlohmann::json runTruth(const TruthJob& job) {
       {"options", optionsJson(job.truth)},
       {"particles", truth.classOf.size()},
       {"particles_per_class", perClass},
+      {"volume_fraction_per_class", classFractions},
       {"volume_fraction", truth.volumeFraction},
       {"photo_area_fraction", sectionAreaFraction(truth.volume, 2)},
       {"photo_xz_area_fraction", sectionAreaFraction(truth.volume, 1)},

@@ -44,6 +44,7 @@ constexpr std::uint64_t kPairStream = 0x7061697273;   // "pairs"
 struct WeightedPair {
   int width = 0, height = 0;
   double weight = 0;
+  int phase = 0;  ///< the kind of particle whose photo particles have this box
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
@@ -52,17 +53,17 @@ using placement::detail::ShapeKey;
 // The (width, height) pairs of each area bin, from the particles the histogram counts (not cut by
 // the photo's border; all when every one is), weighted by their particles' weights, or counted.
 BinPairs pairsPerBin(const ExemplarStats& stats, const std::vector<double>& particleWeights) {
-  std::array<std::map<std::pair<int, int>, double>, kBins> weights;
+  std::array<std::map<std::array<int, 3>, double>, kBins> weights;
   for (std::size_t i : statisticalParticles(stats.particles)) {
     const Particle2D& p = stats.particles[i];
     const double weight = particleWeights.empty() ? 1.0 : particleWeights[i];
     if (p.box.width > 0 && p.box.height > 0 && weight > 0)
-      weights[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height}] += weight;
+      weights[std::size_t(stats.histogram.binOf(p.area))][{p.box.width, p.box.height, p.phase}] += weight;
   }
   BinPairs pairs;
   for (int b = 0; b < kBins; ++b)
     for (const auto& [size, weight] : weights[std::size_t(b)])
-      pairs[std::size_t(b)].push_back({size.first, size.second, weight});
+      pairs[std::size_t(b)].push_back({size[0], size[1], weight, size[2]});
   return pairs;
 }
 
@@ -188,7 +189,7 @@ PlacementPilot pilotOf(const PhasePlan& plan, const BinPairs& pairs, const Parti
     while (n < kMaxPilotShapes) {
       ++n;
       const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
-      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng);
+      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng, pair.phase);
       const auto voxels = double(placement::detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
       sum += voxels;
       sumOfSquares += voxels * voxels;
@@ -425,7 +426,7 @@ private:
     bool placed = false;
     for (std::optional<std::size_t> pair = drawUntried(); pair && !placed;) {
       const std::optional<std::size_t> next = untried.empty() ? std::nullopt : std::optional(drawUntried());
-      if (next) phase_->shapes.makeAhead({bin, pairs[*next].width, pairs[*next].height});
+      if (next) phase_->shapes.makeAhead({bin, pairs[*next].width, pairs[*next].height, pairs[*next].phase});
       placed = tryPair(pairs[*pair], bin);
       if (placed) {
         failures[*pair] = 0;
@@ -437,7 +438,7 @@ private:
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
-        phase_->shapes.forget({bin, pairs[i].width, pairs[i].height});
+        phase_->shapes.forget({bin, pairs[i].width, pairs[i].height, pairs[i].phase});
         pairs.erase(pairs.begin() + std::ptrdiff_t(i));
         failures.erase(failures.begin() + std::ptrdiff_t(i));
       }
@@ -445,7 +446,8 @@ private:
   }
 
   bool tryPair(const WeightedPair& pair, int bin) {
-    const placement::detail::ReadyShape shape = phase_->shapes.take({bin, pair.width, pair.height});
+    const placement::detail::ReadyShape shape =
+        phase_->shapes.take({bin, pair.width, pair.height, pair.phase});
     return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
   }
 

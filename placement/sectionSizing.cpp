@@ -65,10 +65,10 @@ std::vector<SectionSample> sampleClass(const ExemplarStats& stats, const Particl
   std::vector<SectionSample> out;
   std::vector<double> along;
   for (int s = 0; s < shapes; ++s) {
-    const cv::Rect& box = stats.particles[members[uniformIndex(rng, members.size())]].box;
-    const ParticleSize size = factory.pickDepth(box.width, box.height, rng);
-    const std::vector<Eigen::Vector3d> centres =
-        centresOf(factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng));
+    const Particle2D& member = stats.particles[members[uniformIndex(rng, members.size())]];
+    const ParticleSize size = factory.pickDepth(member.box.width, member.box.height, rng, member.phase);
+    const std::vector<Eigen::Vector3d> centres = centresOf(factory.make(
+        scaled(size.width), scaled(size.height), scaled(size.depth), rng, factory.phaseOf(size.source)));
     along.resize(centres.size());
     for (int p = 0; p < planes; ++p) {
       SectionSample sample = cutAtRandom(centres, along, factory.aligned(), rng);

@@ -127,9 +127,28 @@ SegmentationOptions segmentationOptions(Keywords& keywords) {
   return options;
 }
 
+/// phases= (an int from 1 to 8, or "auto") and phase_mask= (a path), as --phases and --phase-mask.
+PhaseOptions phaseOptions(Keywords& keywords) {
+  PhaseOptions options;
+  const py::object phases = keywords.take("phases");
+  if (py::isinstance<py::str>(phases)) {
+    if (phases.cast<std::string>() != "auto") throw OptionError("phases must be auto or a count from 1 to 8");
+    options.phases = kAutoPhases;
+  } else if (py::isinstance<py::int_>(phases) && !py::isinstance<py::bool_>(phases)) {
+    options.phases = phases.cast<int>();
+    if (options.phases < 1 || options.phases > kMaxPhases)
+      throw OptionError("phases must be auto or a count from 1 to 8, got " + std::to_string(options.phases));
+  } else if (!phases.is_none()) {
+    keywords.wrongType("phases", "an int or \"auto\"", phases);
+  }
+  options.maskPath = keywords.path("phase_mask");
+  return options;
+}
+
 ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
   ParticleSolidOptions options;
   options.segmentation = segmentationOptions(keywords);
+  options.phases = phaseOptions(keywords);
   const int size = int(keywords.integer("size").value_or(128));
   options.dims = {size, size, size};
   if (const auto dims = keywords.integers("dims", 3)) options.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
@@ -206,6 +225,8 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   });
   const Dims d = solid.volume.dims;
   py::dict result;
+  if (std::vector<std::uint8_t> phase = phaseGrid(solid.volume); !phase.empty())
+    result["phase"] = ownedArray(std::move(phase), {d.z, d.y, d.x});
   result["particle_id"] = ownedArray(std::move(solid.volume.particleId), {d.z, d.y, d.x});
   result["color"] = ownedArray(interleaved(std::move(solid.volume.color)), {d.z, d.y, d.x, 3});
   const auto placed = py::ssize_t(solid.wholeVolumes.volumes.size());
@@ -219,6 +240,8 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
 py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
   Keywords keywords("analyze", kwargs);
   const SegmentationOptions options = segmentationOptions(keywords);
+  const PhaseOptions phases = phaseOptions(keywords);
+  const std::uint64_t seed = std::uint64_t(keywords.integer("seed").value_or(1));
   const std::optional<std::string> labels = keywords.path("labels"), reportPath = keywords.path("report");
   keywords.finish();
   std::string name;
@@ -233,7 +256,9 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
       if (labels) outputs->addFile("labels", *labels, {".png"});
       if (reportPath) outputs->addFile("report", *reportPath, {".json"});
     }
-    const ExemplarStats stats = analyzeExemplar(image, name, options);
+    ExemplarStats stats = analyzeExemplar(image, name, options);
+    if (const std::optional<ParticlePhases> found = findPhases(stats, phases, seed))
+      assignPhases(stats, *found);
     report = toJson(stats);
     cv::Mat labelImage = cv::Mat::zeros(image.rows, image.cols, CV_32S);
     for (const Particle2D& p : stats.particles) labelImage(p.box).setTo(p.id, p.mask);
@@ -554,15 +579,17 @@ PYBIND11_MODULE(solidtex, m) {
         "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict, "
         "with particle_labels, an (H, W) int32 array of the particles' ids (0 = background). "
         "Keywords: mask (a path, a bool array or an image array, white = particle), invert, split, outlines, "
-        "min_area; "
-        "labels and report write the outlined photo "
+        "min_area; phases (an int 1-8 or \"auto\": the particles sorted by colour), phase_mask (a path), "
+        "seed; labels and report write the outlined photo "
         "(PNG) and the statistics (JSON).");
   m.def("particles", &particles, py::arg("photo"),
         "Makes a particle solid from a photo (a path or a numpy array, as analyze takes): a dict of numpy "
-        "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB) and the "
-        "report (a dict). Keywords as the command line's options: size, dims, scale, placer, sizing, "
+        "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB), with "
+        "phases phase (Z, Y, X uint8: 0 matrix, 1..K), and the report (a dict). Keywords as the command "
+        "line's options: size, dims, scale, placer, sizing, "
         "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
-        "mask, invert, split, outlines, min_area; photo_xz and photo_yz (the other planes' photos of a "
+        "mask, invert, split, outlines, min_area, phases, phase_mask; photo_xz and photo_yz (the other "
+        "planes' photos of a "
         "material that differs by direction, photo then the xy plane's; one stands for both); output (.vdb) "
         "and report (.json) write files; progress "
         "shows the "

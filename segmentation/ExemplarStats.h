@@ -18,6 +18,7 @@ struct Particle2D {
   cv::Mat mask;                    ///< CV_8U, box-sized, 255 inside the particle
   cv::Mat residual;                ///< CV_32FC3, box-sized, linear colour minus mean inside mask, 0 outside
   bool border = false;  ///< cut by the image border: shape and colour kept, left out of the histogram
+  int phase = 0;        ///< its kind of particle, 0..K-1 (particlePhases.h); 0 when there is one kind
 };
 
 /// The paper's 10-bin area histogram over the non-border particles.
@@ -56,6 +57,7 @@ struct ExemplarStats {
   double areaShareBelowMinArea = 0;  ///< their share of the area of all regions of 4 pixels or more
   AreaHistogram histogram;
   std::vector<SizePair> sizePairs;  ///< over non-border particles, sorted by (width, height)
+  cv::Mat phaseCentres;  ///< K x 3 CV_32F, each phase's CIE L*a*b* colour; empty: one phase, unsorted
 };
 
 }  // namespace solidtex

@@ -1,5 +1,7 @@
 #include "segmentation/reportJson.h"
 
+#include "segmentation/particlePhases.h"
+
 namespace solidtex {
 namespace {
 
@@ -14,26 +16,49 @@ nlohmann::json histogramJson(const AreaHistogram& h) {
   return {{"edges", h.edges}, {"counts", h.counts}, {"ratios", h.ratios}};
 }
 
+// Each phase's colour, particles, share of the photo and own area histogram.
+nlohmann::json phasesJson(const ExemplarStats& stats) {
+  const std::vector<double> fractions = phaseAreaFractions(stats);
+  nlohmann::json out = nlohmann::json::array();
+  for (int k = 0; k < stats.phaseCentres.rows; ++k) {
+    const ExemplarStats phase = phaseStats(stats, k);
+    const float* lab = stats.phaseCentres.ptr<float>(k);
+    out.push_back({{"phase", k + 1},
+                   {"lab", {lab[0], lab[1], lab[2]}},
+                   {"particle_count", phase.particles.size()},
+                   {"area_fraction", fractions[std::size_t(k)]},
+                   {"histogram", histogramJson(phase.histogram)}});
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json toJson(const ExemplarStats& stats) {
+  const bool phases = stats.phaseCentres.rows > 1;
   nlohmann::json particles = nlohmann::json::array();
-  for (const Particle2D& p : stats.particles) particles.push_back(particleJson(p));
+  for (const Particle2D& p : stats.particles) {
+    particles.push_back(particleJson(p));
+    if (phases) particles.back()["phase"] = p.phase + 1;
+  }
   nlohmann::json pairs = nlohmann::json::array();
   for (const SizePair& s : stats.sizePairs)
     pairs.push_back({{"width", s.width}, {"height", s.height}, {"count", s.count}});
-  return {{"image", {{"width", stats.imageWidth}, {"height", stats.imageHeight}, {"name", stats.name}}},
-          {"particle_count", stats.particles.size()},
-          {"particles", std::move(particles)},
-          {"area_fraction", stats.areaFraction},
-          {"background_color", rgb(stats.backgroundColor)},
-          {"outline_blur", stats.outlineBlur},
-          {"outlines", stats.halfMaximumOutlines ? "half-maximum" : "watershed"},
-          {"min_area", stats.minArea},
-          {"regions_below_min_area", stats.regionsBelowMinArea},
-          {"area_share_below_min_area", stats.areaShareBelowMinArea},
-          {"histogram", histogramJson(stats.histogram)},
-          {"size_pairs", std::move(pairs)}};
+  nlohmann::json out = {
+      {"image", {{"width", stats.imageWidth}, {"height", stats.imageHeight}, {"name", stats.name}}},
+      {"particle_count", stats.particles.size()},
+      {"particles", std::move(particles)},
+      {"area_fraction", stats.areaFraction},
+      {"background_color", rgb(stats.backgroundColor)},
+      {"outline_blur", stats.outlineBlur},
+      {"outlines", stats.halfMaximumOutlines ? "half-maximum" : "watershed"},
+      {"min_area", stats.minArea},
+      {"regions_below_min_area", stats.regionsBelowMinArea},
+      {"area_share_below_min_area", stats.areaShareBelowMinArea},
+      {"histogram", histogramJson(stats.histogram)},
+      {"size_pairs", std::move(pairs)}};
+  if (phases) out["phases"] = phasesJson(stats);
+  return out;
 }
 
 }  // namespace solidtex

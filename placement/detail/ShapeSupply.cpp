@@ -13,7 +13,8 @@ constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
 
 VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, double scale, Rng& rng) {
   const auto scaled = [scale](int pixels) { return int(std::max(1.0, std::round(pixels * scale))); };
-  return factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng);
+  return factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng,
+                      factory.phaseOf(size.source));
 }
 
 ShapeSupply::ShapeSupply(const ParticleFactory& factory, std::uint64_t seed, int phase, double scale)
@@ -29,9 +30,11 @@ ShapeSupply::~ShapeSupply() {
 }
 
 ReadyShape ShapeSupply::make(const ShapeKey& key, std::uint64_t n) const {
-  Rng rng(deriveSeed(seed_, kShapeStream + std::uint64_t(phase_), key[0], key[1], key[2], n));
+  // Sides stay below 2^16: the phase above them keeps the one-phase streams as they were.
+  Rng rng(deriveSeed(seed_, kShapeStream + std::uint64_t(phase_), key[0], key[1],
+                     std::uint64_t(key[2]) + (std::uint64_t(key[3]) << 16), n));
   ReadyShape shape;
-  shape.size = factory_.pickDepth(key[1], key[2], rng);
+  shape.size = factory_.pickDepth(key[1], key[2], rng, key[3]);
   const VoxelShape voxels = makeScaled(factory_, shape.size, scale_, rng);
   if (voxels.voxelCount() > 0) shape.fit = prepareShape(voxels);
   return shape;

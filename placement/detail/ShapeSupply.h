@@ -20,8 +20,9 @@ struct ReadyShape {
   FitShape fit;  ///< no voxels when the shape came out empty
 };
 
-/// An area bin and a (width, height) box of it: the pair that shapes are made for.
-using ShapeKey = std::array<int, 3>;
+/// An area bin, a (width, height) box of it and the phase of the photo particles with that box:
+/// the pair that shapes are made for.
+using ShapeKey = std::array<int, 4>;
 
 /// A particle of `size` pixels made at `scale` voxels per pixel, each edge at least one voxel.
 VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, double scale, Rng& rng);

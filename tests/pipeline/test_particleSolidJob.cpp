@@ -204,6 +204,18 @@ TEST(ParticleSolidJob, BadInputLeavesNoOutputFile) {
   maskedPlanes.segmentation.maskPath = maskedPlanes.photo;
   EXPECT_THROW(runParticleSolid(maskedPlanes), InputError);
   EXPECT_FALSE(fs::exists(output));
+  ParticleSolidJob phasedPlanes = jobFor("coins", 32, output);
+  phasedPlanes.photoXz = std::string(SOLIDTEX_DATA_DIR) + "/particles/smarties.png";
+  phasedPlanes.phases.phases = 2;
+  EXPECT_THROW(runParticleSolid(phasedPlanes), InputError);
+  // The photo itself as a phase mask: its particles show more colours than two phases.
+  ParticleSolidJob crowdedMask = jobFor("smarties", 32, output);
+  crowdedMask.phases = {2, crowdedMask.photo};
+  EXPECT_THROW(runParticleSolid(crowdedMask), InputError);
+  ParticleSolidJob noPhases = jobFor("coins", 32, output);
+  noPhases.phases.phases = -1;
+  EXPECT_THROW(runParticleSolid(noPhases), InputError);
+  EXPECT_FALSE(fs::exists(output));
   ParticleSolidJob unwritable = jobFor("coins", 32, "/proc/solidtex/out.vdb");
   EXPECT_THROW(runParticleSolid(unwritable), InputError);
 }

@@ -1,0 +1,270 @@
+#include "segmentation/particlePhases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+#include "common/Error.h"
+#include "io/imageIO.h"
+#include "segmentation/detail/color.h"
+#include "segmentation/detail/summarize.h"
+
+namespace solidtex {
+namespace {
+
+constexpr int kAttempts = 3;
+
+// The particles' mean colours in L*a*b*, one row each.
+cv::Mat particleLab(const ExemplarStats& stats) {
+  std::vector<cv::Vec3f> linear;
+  for (const Particle2D& p : stats.particles) linear.push_back(p.color);
+  return labOfColours(linear);
+}
+
+int nearestRow(const float* lab, const cv::Mat& centres) {
+  int best = 0;
+  float bestDistance = std::numeric_limits<float>::max();
+  for (int c = 0; c < centres.rows; ++c) {
+    const float* m = centres.ptr<float>(c);
+    const float d = (lab[0] - m[0]) * (lab[0] - m[0]) + (lab[1] - m[1]) * (lab[1] - m[1]) +
+                    (lab[2] - m[2]) * (lab[2] - m[2]);
+    if (d < bestDistance) best = c, bestDistance = d;
+  }
+  return best;
+}
+
+// Centres reordered darkest first, and every sample's phase by its nearest centre.
+ParticlePhases sortedPhases(const cv::Mat& samples, const cv::Mat& centres, std::string method) {
+  std::vector<int> order(std::size_t(centres.rows));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return centres.at<float>(a, 0) < centres.at<float>(b, 0); });
+  ParticlePhases out;
+  out.method = std::move(method);
+  out.centres.create(centres.rows, 3, CV_32F);
+  for (int r = 0; r < centres.rows; ++r) centres.row(order[std::size_t(r)]).copyTo(out.centres.row(r));
+  out.phaseOf.resize(std::size_t(samples.rows));
+  for (int i = 0; i < samples.rows; ++i)
+    out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), out.centres);
+  return out;
+}
+
+struct Clustering {
+  cv::Mat centres;
+  std::vector<int> labels;
+  double bic = 0;
+};
+
+// A covariance floor (L*a*b* units squared): colours a drawn image repeats exactly, or a phase of
+// one particle, would otherwise have an infinite density.
+constexpr double kCovarianceFloor = 25.0;
+
+// The BIC of the Gaussian mixture the clustering stands for: each cluster's mean and covariance
+// (plus the floor), full or spherical, the weights its share. Full covariances follow the line
+// shading draws a phase's colours along, where one pooled spherical variance (X-means) splits it
+// into ever more phases; a few particles a phase (smarties) have too few colours for nine
+// parameters, and spherical ones tell them apart.
+double bicOf(const cv::Mat& samples, const std::vector<int>& labels, int k, bool fullCovariance) {
+  const int n = samples.rows;
+  std::vector<cv::Vec3d> sums(std::size_t(k), cv::Vec3d(0, 0, 0));
+  std::vector<cv::Matx33d> products(std::size_t(k), cv::Matx33d::zeros());
+  std::vector<int> counts(std::size_t(k), 0);
+  for (int i = 0; i < n; ++i) {
+    const cv::Vec3d x(samples.at<float>(i, 0), samples.at<float>(i, 1), samples.at<float>(i, 2));
+    const auto c = std::size_t(labels[std::size_t(i)]);
+    sums[c] += x;
+    products[c] += x * x.t();
+    ++counts[c];
+  }
+  struct Component {
+    double logWeight = 0;
+    cv::Vec3d mean;
+    cv::Matx33d inverse;
+    double logNormalizer = 0;
+  };
+  std::vector<Component> components;
+  for (std::size_t c = 0; c < std::size_t(k); ++c) {
+    if (counts[c] == 0) continue;
+    const double m = counts[c];
+    const cv::Vec3d mean = sums[c] / m;
+    const cv::Matx33d scatter = products[c] * (1 / m) - mean * mean.t();
+    const double spread = (scatter(0, 0) + scatter(1, 1) + scatter(2, 2)) / 3;
+    const cv::Matx33d covariance =
+        (fullCovariance ? scatter : cv::Matx33d::eye() * spread) + cv::Matx33d::eye() * kCovarianceFloor;
+    components.push_back({std::log(m / n), mean, covariance.inv(cv::DECOMP_CHOLESKY),
+                          -0.5 * (3 * std::log(2 * M_PI) + std::log(cv::determinant(covariance)))});
+  }
+  double logLikelihood = 0;
+  std::vector<double> terms(components.size());
+  for (int i = 0; i < n; ++i) {
+    const cv::Vec3d x(samples.at<float>(i, 0), samples.at<float>(i, 1), samples.at<float>(i, 2));
+    for (std::size_t c = 0; c < components.size(); ++c) {
+      const cv::Vec3d d = x - components[c].mean;
+      terms[c] =
+          components[c].logWeight + components[c].logNormalizer - 0.5 * d.dot(components[c].inverse * d);
+    }
+    const double top = *std::max_element(terms.begin(), terms.end());
+    double sum = 0;
+    for (double t : terms) sum += std::exp(t - top);
+    logLikelihood += top + std::log(sum);
+  }
+  const double parameters = (k - 1) + k * (3 + (fullCovariance ? 6 : 1));
+  return -2 * logLikelihood + parameters * std::log(double(n));
+}
+
+Clustering cluster(const cv::Mat& samples, int k, std::uint64_t seed) {
+  Clustering out;
+  cv::Mat labels;
+  if (k == 1) {
+    cv::reduce(samples, out.centres, 0, cv::REDUCE_AVG);
+    labels = cv::Mat::zeros(samples.rows, 1, CV_32S);
+  } else {
+    cv::theRNG().state = seed == 0 ? 1 : seed;  // k-means++ draws from OpenCV's thread's generator
+    cv::kmeans(samples, k, labels,
+               cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 100, 1e-4), kAttempts,
+               cv::KMEANS_PP_CENTERS, out.centres);
+  }
+  out.labels.assign(labels.begin<int>(), labels.end<int>());
+  out.bic = std::min(bicOf(samples, out.labels, k, true), bicOf(samples, out.labels, k, false));
+  return out;
+}
+
+std::string nameOf(const ExemplarStats& stats) { return stats.name.empty() ? "the photo" : stats.name; }
+
+}  // namespace
+
+ParticlePhases classifyParticles(const ExemplarStats& stats, int phases, std::uint64_t seed) {
+  if (phases < 0 || phases > kMaxPhases)
+    throw OptionError("--phases must be auto or in [1, " + std::to_string(kMaxPhases) + "], got " +
+                      std::to_string(phases));
+  const int n = int(stats.particles.size());
+  if (n < phases)
+    throw InputError(nameOf(stats) + " shows " + std::to_string(n) + " particles, fewer than --phases " +
+                     std::to_string(phases));
+  const cv::Mat samples = particleLab(stats);
+  if (phases > 0) {
+    const Clustering c = cluster(samples, phases, seed);
+    return sortedPhases(samples, c.centres, "k-means of the particles' colours in CIE L*a*b*");
+  }
+  std::vector<double> bic;
+  Clustering best;
+  for (int k = 1; k <= std::min(kMaxPhases, n); ++k) {
+    Clustering c = cluster(samples, k, seed);
+    bic.push_back(c.bic);
+    if (k == 1 || c.bic < best.bic) best = std::move(c);
+  }
+  ParticlePhases out = sortedPhases(samples, best.centres,
+                                    "k-means of the particles' colours in CIE L*a*b*, the count by BIC");
+  out.bic = std::move(bic);
+  return out;
+}
+
+ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat& labelImage,
+                                      const std::string& name, int maxPhases) {
+  if (labelImage.type() != CV_32FC3) throw InputError(name + ": a phase mask must be a colour image");
+  if (labelImage.cols != stats.imageWidth || labelImage.rows != stats.imageHeight)
+    throw InputError(name + " is " + std::to_string(labelImage.cols) + "x" + std::to_string(labelImage.rows) +
+                     " but the photo is " + std::to_string(stats.imageWidth) + "x" +
+                     std::to_string(stats.imageHeight));
+  cv::Mat bytes;
+  labelImage.convertTo(bytes, CV_8UC3, 255.0);
+  const auto packedAt = [&](int x, int y) {
+    const cv::Vec3b v = bytes.at<cv::Vec3b>(y, x);
+    return (std::uint32_t(v[0]) << 16) | (std::uint32_t(v[1]) << 8) | v[2];
+  };
+  std::vector<std::uint32_t> majority(stats.particles.size());
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+    const Particle2D& p = stats.particles[i];
+    std::map<std::uint32_t, int> votes;
+    for (int y = 0; y < p.box.height; ++y)
+      for (int x = 0; x < p.box.width; ++x)
+        if (p.mask.at<std::uint8_t>(y, x)) ++votes[packedAt(p.box.x + x, p.box.y + y)];
+    majority[i] = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) {
+                    return a.second < b.second;
+                  })->first;
+  }
+  std::vector<std::uint32_t> values = majority;
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  if (int(values.size()) > maxPhases)
+    throw InputError(name + " gives the particles " + std::to_string(values.size()) + " phases, more than " +
+                     (maxPhases == kMaxPhases ? std::string("8") : "--phases " + std::to_string(maxPhases)));
+  const cv::Mat samples = particleLab(stats);
+  ParticlePhases out;
+  out.method = "phase mask " + name;
+  out.centres = cv::Mat::zeros(int(values.size()), 3, CV_32F);
+  std::vector<int> counts(values.size(), 0);
+  out.phaseOf.resize(majority.size());
+  for (std::size_t i = 0; i < majority.size(); ++i) {
+    const int c = int(std::lower_bound(values.begin(), values.end(), majority[i]) - values.begin());
+    out.phaseOf[i] = c;
+    out.centres.row(c) += samples.row(int(i));
+    ++counts[std::size_t(c)];
+  }
+  for (int c = 0; c < out.centres.rows; ++c) out.centres.row(c) /= double(counts[std::size_t(c)]);
+  return out;
+}
+
+ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres) {
+  const cv::Mat samples = particleLab(stats);
+  ParticlePhases out;
+  out.method = "the nearest of the solid's phase colours";
+  out.centres = centres.clone();
+  out.phaseOf.resize(stats.particles.size());
+  for (int i = 0; i < samples.rows; ++i)
+    out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), centres);
+  return out;
+}
+
+std::optional<ParticlePhases> findPhases(const ExemplarStats& stats, const PhaseOptions& options,
+                                         std::uint64_t seed) {
+  if (options.phases < 0 || options.phases > kMaxPhases)
+    throw OptionError("--phases must be auto or in [1, 8], got " + std::to_string(options.phases));
+  if (options.maskPath)
+    return particlePhasesOfLabels(stats, loadPhoto(*options.maskPath), *options.maskPath,
+                                  options.phases >= 2 ? options.phases : kMaxPhases);
+  if (options.phases == 1) return std::nullopt;
+  return classifyParticles(stats, options.phases, seed);
+}
+
+cv::Mat labOfColours(const std::vector<cv::Vec3f>& linear) {
+  cv::Mat colours(int(linear.size()), 1, CV_32FC3);
+  for (std::size_t i = 0; i < linear.size(); ++i) colours.at<cv::Vec3f>(int(i)) = linear[i];
+  return segmentation::detail::linearToLab(colours).reshape(1, colours.rows).clone();
+}
+
+void assignPhases(ExemplarStats& stats, const ParticlePhases& phases) {
+  if (phases.phaseOf.size() != stats.particles.size())
+    throw std::invalid_argument("assignPhases: one phase per particle");
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) stats.particles[i].phase = phases.phaseOf[i];
+  stats.phaseCentres = phases.centres.clone();
+}
+
+std::vector<double> phaseAreaFractions(const ExemplarStats& stats) {
+  std::vector<double> areas(std::size_t(std::max(1, stats.phaseCentres.rows)), 0.0);
+  double total = 0;
+  for (const Particle2D& p : stats.particles) {
+    areas[std::size_t(p.phase)] += p.area;
+    total += p.area;
+  }
+  // The particles' areas split the photo's particle fraction, which counts their outlines alike.
+  for (double& area : areas) area = total > 0 ? stats.areaFraction * area / total : 0;
+  return areas;
+}
+
+ExemplarStats phaseStats(const ExemplarStats& stats, int phase) {
+  ExemplarStats out = stats;
+  out.particles.clear();
+  for (const Particle2D& p : stats.particles)
+    if (p.phase == phase) out.particles.push_back(p);
+  out.areaFraction = phaseAreaFractions(stats)[std::size_t(phase)];
+  std::vector<const Particle2D*> counted;
+  for (std::size_t i : statisticalParticles(out.particles)) counted.push_back(&out.particles[i]);
+  out.histogram = segmentation::detail::buildAreaHistogram(counted);
+  out.sizePairs = segmentation::detail::buildSizePairs(counted);
+  return out;
+}
+
+}  // namespace solidtex
