@@ -16,6 +16,7 @@ import solidtex
 
 CLI = os.environ["SOLIDTEX_CLI"]
 COINS = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "particles", "coins.png")
+SMARTIES = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "particles", "smarties.png")
 CT = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "volumes", "ct_stent_64.vdb")
 
 
@@ -86,6 +87,24 @@ class InMemoryTest(unittest.TestCase):
         self.assertAlmostEqual(report["volume"]["volume_fraction"], float((ids > 0).mean()), places=12)
         self.assertEqual(report["volume"]["particles"], len(np.unique(ids[ids > 0])))
         self.assertEqual(report["photo"]["particle_count"], 30)
+
+    def test_phases_give_the_command_lines_phase_array(self):
+        solid = solidtex.particles(SMARTIES, size=32, seed=3, phases=5)
+        npy = os.path.join(self.folder.name, "phases_npy")
+        run = cli("particles", SMARTIES, "-o", os.path.join(self.folder.name, "phases.vdb"), "--size", "32",
+                  "--seed", "3", "--phases", "5", "--npy", npy, "--quiet")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        phase = np.load(os.path.join(npy, "phase.npy"))
+        self.assertEqual(phase.dtype, np.uint8)
+        self.assertEqual(phase.tobytes(), solid["phase"].tobytes())
+        np.testing.assert_array_equal(phase > 0, solid["particle_id"] > 0)
+        self.assertEqual(solid["report"]["phases"]["count"], 5)
+        self.assertLessEqual(int(phase.max()), 5)
+        # One phase per particle.
+        ids = solid["particle_id"]
+        for particle in np.unique(ids[ids > 0]):
+            self.assertEqual(len(np.unique(phase[ids == particle])), 1)
+        self.assertNotIn("phase", self.solid)
 
     def test_grey_and_float_images_read_as_their_rgb_uint8_form(self):
         grey = self.photo[:, :, 0]
@@ -199,7 +218,8 @@ class SynthesizeTest(unittest.TestCase):
 class KeywordsTest(unittest.TestCase):
     def test_a_keyword_of_the_wrong_type_is_a_type_error_naming_it(self):
         for keywords, name in [({"size": "32"}, "size"), ({"size": True}, "size"), ({"seed": 1.5}, "seed"),
-                               ({"dims": (8, 8)}, "dims"), ({"split": 1}, "split"), ({"output": 3}, "output")]:
+                               ({"dims": (8, 8)}, "dims"), ({"split": 1}, "split"), ({"output": 3}, "output"),
+                               ({"phases": True}, "phases"), ({"phases": 2.0}, "phases")]:
             with self.assertRaises(TypeError) as error:
                 solidtex.particles(COINS, **keywords)
             self.assertIn(name, str(error.exception))
@@ -210,7 +230,8 @@ class KeywordsTest(unittest.TestCase):
     def test_a_value_out_of_range_is_a_value_error_naming_the_keyword_not_a_flag(self):
         for keywords, name in [({"views": 7}, "views"), ({"scale": 100.0}, "scale"),
                                ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer"),
-                               ({"seed": -1}, "seed"), ({"outlines": "sharp"}, "outlines")]:
+                               ({"seed": -1}, "seed"), ({"outlines": "sharp"}, "outlines"),
+                               ({"phases": 0}, "phases"), ({"phases": "two"}, "phases")]:
             with self.assertRaises(ValueError) as error:
                 solidtex.particles(COINS, size=16, **keywords)
             self.assertIn(name, str(error.exception))
