@@ -30,11 +30,16 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
       ->required();
   command->add_option(
       "--photo-xz", job->photoXz,
-      "A material that differs by direction: the photo of its xz plane (x across, z down), at "
-      "the xy photo's pixel size; the particles are aligned with the axes. Alone, it stands "
-      "for the yz plane too");
+      "A material that differs by direction: the photo of its xz plane (x across, z down); the "
+      "particles are aligned with the axes. Alone, it stands for the yz plane too");
   command->add_option("--photo-yz", job->photoYz,
                       "The photo of the yz plane (y across, z down); alone, it stands for the xz plane too");
+  command
+      ->add_option("--pixel-sizes", job->pixelSizes,
+                   "The side of a pixel of the xy, xz and yz photos (one unit): the xz and yz photos are "
+                   "resampled to the xy photo's (default: the files' resolution metadata when all three "
+                   "have it, else one size)")
+      ->expected(3);
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
   auto* sizeOption =
       command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();

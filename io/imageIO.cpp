@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -165,6 +166,19 @@ cv::Mat loadPhoto(const std::string& path) {
     });
   cv::min(cv::max(rgb, 0.0), 1.0, rgb);
   return rgb;
+}
+
+std::optional<std::array<double, 2>> pixelSizeOf(const std::string& path) {
+  const OIIO::ImageSpec spec = openImage(path)->spec();
+  const std::string unit = spec.get_string_attribute("ResolutionUnit");
+  const double metres = unit == "in" || unit == "inch" ? 0.0254
+                        : unit == "cm"                 ? 0.01
+                        : unit == "mm"                 ? 0.001
+                        : unit == "m"                  ? 1.0
+                                                       : 0.0;
+  const double x = spec.get_float_attribute("XResolution"), y = spec.get_float_attribute("YResolution");
+  if (!(metres > 0) || !(x > 0) || !(y > 0) || !std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+  return std::array<double, 2>{metres / x, metres / y};
 }
 
 cv::Mat photoFromPixels(const void* pixels, PixelType type, int width, int height, int channels,

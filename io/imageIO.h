@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <optional>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -18,6 +20,12 @@ inline constexpr int kMinPhotoSide = 8;
 /// on the header, before any pixel is decoded). What the codec libraries print on stderr is kept
 /// off the terminal: it goes into the error's message, or nowhere when the image reads.
 cv::Mat loadPhoto(const std::string& path);
+
+/// The width and height of a pixel of the image at `path`, in metres, from its resolution metadata
+/// (TIFF X/YResolution, PNG pHYs, JPEG density: OpenImageIO's XResolution, YResolution and
+/// ResolutionUnit in inches, centimetres, millimetres or metres); none when it gives no unit or
+/// no positive resolution.
+std::optional<std::array<double, 2>> pixelSizeOf(const std::string& path);
 
 /// The pixel types a photo in memory may have.
 enum class PixelType { UInt8, Float32 };

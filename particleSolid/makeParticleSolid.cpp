@@ -226,8 +226,8 @@ const ExemplarStats& ParticleSolidBuilder::analyze(const cv::Mat& photoSrgb, con
   solid_.timer.start("analysis");
   report(progress_, "segmenting the photo");
   solid_.stats = analyzeExemplar(photoSrgb, name, options_.segmentation);
+  if (options_.phases.any()) report(progress_, "sorting the particles into phases");
   if (std::optional<ParticlePhases> phases = findPhases(solid_.stats, options_.phases, options_.seed)) {
-    report(progress_, "sorting the particles into phases");
     assignPhases(solid_.stats, *phases);
     solid_.phases = std::move(*phases);
   }

@@ -16,6 +16,7 @@
 #include "particleSolid/particleSolidReport.h"
 #include "pipeline/compareJob.h"
 #include "pipeline/jobOutputs.h"
+#include "pipeline/planePixelSizes.h"
 #include "pipeline/warnOfDroppedRegions.h"
 #include "validation/arrangement.h"
 #include "validation/compareSections.h"
@@ -26,9 +27,20 @@ namespace {
 
 // The xz and yz photos, one standing for both.
 void analyzePlanePhotos(const ParticleSolidJob& job, ParticleSolidBuilder& builder) {
-  if (!job.photoXz && !job.photoYz) return;
+  if (!job.photoXz && !job.photoYz) {
+    if (!job.pixelSizes.empty())
+      throw OptionError(
+          "--pixel-sizes brings three planes' photos to one scale: give --photo-xz or --photo-yz");
+    return;
+  }
   const std::string xzPath = job.photoXz.value_or(*job.photoYz), yzPath = job.photoYz.value_or(*job.photoXz);
-  const cv::Mat xz = loadPhoto(xzPath), yz = xzPath == yzPath ? xz : loadPhoto(yzPath);
+  cv::Mat xz = loadPhoto(xzPath), yz = xzPath == yzPath ? xz : loadPhoto(yzPath);
+  if (const auto sizes = planePixelSizes(job.pixelSizes, {job.photo, xzPath, yzPath})) {
+    const double side = squarePixelSide((*sizes)[0], job.photo);
+    const bool oneForBoth = xz.data == yz.data;
+    xz = atPixelSize(xz, (*sizes)[1], side, xzPath);
+    yz = oneForBoth && (*sizes)[1] == (*sizes)[2] ? xz : atPixelSize(yz, (*sizes)[2], side, yzPath);
+  }
   builder.analyzePlanes(xz, xzPath, yz, yzPath);
 }
 

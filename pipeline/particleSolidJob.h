@@ -1,6 +1,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +16,10 @@ struct ParticleSolidJob : ParticleSolidOptions {
   /// A material that differs by direction: the photos of its xz and yz planes (z down); one given
   /// stands for both. Both the same as `photo`: the one-photo solid.
   std::optional<std::string> photoXz, photoYz;
+  /// With photoXz or photoYz: the side of a pixel of the xy, xz and yz photos (one unit), to which
+  /// the xz and yz photos are resampled to the xy photo's; empty: the files' resolution metadata
+  /// when all three have it, else one size for all (planePixelSizes).
+  std::vector<double> pixelSizes;
   std::string output;  ///< .vdb path
   std::optional<std::string> report;
   std::optional<std::string> preview;   ///< folder for PNGs

@@ -29,6 +29,7 @@
 #include "pipeline/compareJob.h"
 #include "pipeline/growSolidJob.h"
 #include "pipeline/jobOutputs.h"
+#include "pipeline/planePixelSizes.h"
 #include "pipeline/synthesizeJob.h"
 #include "pipeline/synthesizeVolumeJob.h"
 #include "python/binding.h"
@@ -180,6 +181,14 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   const bool progress = keywords.flag("progress").value_or(false);
   options.timePlacement = progress;
   const py::object xzPhoto = keywords.take("photo_xz"), yzPhoto = keywords.take("photo_yz");
+  std::vector<double> pixelSizes;
+  if (const py::object sizes = keywords.take("pixel_sizes"); !sizes.is_none()) {
+    try {
+      pixelSizes = sizes.cast<std::vector<double>>();
+    } catch (const py::cast_error&) {
+      keywords.wrongType("pixel_sizes", "a sequence of three numbers", sizes);
+    }
+  }
   keywords.finish();
   std::string name, xzName, yzName;
   const cv::Mat image = photoOf(photo, name);
@@ -192,6 +201,16 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
   nlohmann::json report;
   runReleased([&] {
     const ThreadLimit limit(threads);
+    if (!pixelSizes.empty()) {
+      if (xz.empty())
+        throw OptionError(
+            "--pixel-sizes brings three planes' photos to one scale: give --photo-xz or --photo-yz");
+      const std::array<PixelSize, 3> sizes = *planePixelSizes(pixelSizes, {name, xzName, yzName});
+      const double side = squarePixelSide(sizes[0], name);
+      const bool oneForBoth = xz.data == yz.data && sizes[1] == sizes[2];
+      xz = atPixelSize(xz, sizes[1], side, xzName);
+      yz = oneForBoth ? xz : atPixelSize(yz, sizes[2], side, yzName);
+    }
     ProgressLine line(progress);
     std::optional<OutputFiles> outputs;
     if (output || reportPath) {
@@ -590,7 +609,8 @@ PYBIND11_MODULE(solidtex, m) {
         "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
         "mask, invert, split, outlines, min_area, phases, phase_mask; photo_xz and photo_yz (the other "
         "planes' photos of a "
-        "material that differs by direction, photo then the xy plane's; one stands for both); output (.vdb) "
+        "material that differs by direction, photo then the xy plane's; one stands for both), pixel_sizes "
+        "(their three pixel sides, as --pixel-sizes); output (.vdb) "
         "and report (.json) write files; progress "
         "shows the "
         "progress line. Ctrl-C stops it and leaves no file.");
