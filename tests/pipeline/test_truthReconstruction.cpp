@@ -90,12 +90,8 @@ INSTANTIATE_TEST_SUITE_P(Ellipsoids, ReconstructionOfATruth,
                            return std::string(info.param.name);
                          });
 
-// Aligned 3 : 1.5 : 1 particles and their three middle sections: a solid from the three photos
-// shows each plane's section shapes (mean aspect within 0.05 of that photo's; 0.025 measured on
-// each), where one from the xy photo alone misses the xz plane's by over 0.1, and its particle
-// volumes hold (W1/mean 0.20 measured; the one-photo solid's are twice the truth's).
-TEST(AnisotropicTruth, ThreePhotosGiveEachPlanesSections) {
-  const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / "aligned";
+// Aligned 3 : 1.5 : 1 particles (192^3, seed 5) and their three middle sections, in `dir`.
+void makeAlignedTruth(const fs::path& dir) {
   fs::remove_all(dir);
   TruthJob truth;
   truth.folder = dir.string();
@@ -105,6 +101,15 @@ TEST(AnisotropicTruth, ThreePhotosGiveEachPlanesSections) {
   truth.truth.anisotropy = {3, 1.5, 1};
   truth.truth.seed = 5;
   runTruth(truth);
+}
+
+// Aligned 3 : 1.5 : 1 particles and their three middle sections: a solid from the three photos
+// shows each plane's section shapes (mean aspect within 0.05 of that photo's; 0.025 measured on
+// each), where one from the xy photo alone misses the xz plane's by over 0.1, and its particle
+// volumes hold (W1/mean 0.20 measured; the one-photo solid's are twice the truth's).
+TEST(AnisotropicTruth, ThreePhotosGiveEachPlanesSections) {
+  const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / "aligned";
+  makeAlignedTruth(dir);
   const auto solidFrom = [&](bool planes) {
     ParticleSolidJob job;
     job.photo = (dir / "photo.png").string();
@@ -157,15 +162,7 @@ TEST(AnisotropicTruth, ThreePhotosGiveEachPlanesSections) {
 // sections are 0.17 too round.
 TEST(AnisotropicTruth, HalfScalePlanePhotosWithTheirPixelSizes) {
   const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / "half_scale";
-  fs::remove_all(dir);
-  TruthJob truth;
-  truth.folder = dir.string();
-  truth.truth.dims = {192, 192, 192};
-  truth.truth.classes[0].meanRadius = 4;
-  truth.truth.classes[1].meanRadius = 7.5;
-  truth.truth.anisotropy = {3, 1.5, 1};
-  truth.truth.seed = 5;
-  runTruth(truth);
+  makeAlignedTruth(dir);
   for (const char* plane : {"xz", "yz"}) {
     cv::Mat half;
     cv::resize(loadPhoto((dir / ("photo_" + std::string(plane) + ".png")).string()), half, cv::Size(96, 96),
