@@ -37,9 +37,11 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   command
       ->add_option("--pixel-sizes", job->pixelSizes,
                    "The side of a pixel of the xy, xz and yz photos (one unit): the xz and yz photos are "
-                   "resampled to the xy photo's (default: the files' resolution metadata when all three "
-                   "have it, else one size)")
+                   "resampled to the xy photo's (default: one size for all)")
       ->expected(3);
+  command->add_flag("--pixel-sizes-from-files", job->pixelSizesFromFiles,
+                    "Take the three photos' pixel sizes from their resolution metadata (TIFF, PNG pHYs, "
+                    "JPEG density) instead");
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
   auto* sizeOption =
       command->add_option("--size", *size, "Edge of the cubic volume in voxels")->capture_default_str();

@@ -76,9 +76,12 @@ Action addTruthCommand(CLI::App& app) {
     t.shape = parseTruthShape(*shape);
     t.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
     t.classes[0].radiusSpread = t.classes[1].radiusSpread = medium->radiusSpread = *spread;
+    // Shares that add up to 1 in decimals leave the small class a rounding error, not a share.
+    constexpr double kRounding = 1e-9;
     t.classes[0].share = 1 - t.classes[1].share - medium->share;
-    if (t.classes[0].share < 0)
+    if (t.classes[0].share < -kRounding)
       throw OptionError("--large-share and --medium-share must add up to at most 1");
+    if (t.classes[0].share < kRounding) t.classes[0].share = 0;
     t.classes.insert(t.classes.begin() + 1, *medium);
     std::erase_if(t.classes, [](const ParticleClass& c) { return c.share <= 0; });
     const auto report = runTruth(*job);

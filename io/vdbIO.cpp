@@ -342,12 +342,15 @@ io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& 
 
 // Each particle's phase (phase grid value - 1) from the voxels the two grids share.
 std::vector<std::uint8_t> particlePhasesOf(const openvdb::Int32Grid& ids, const openvdb::Int32Grid& phase,
-                                           const std::string& path) {
+                                           const std::string& path, std::uint64_t voxels) {
   std::vector<std::uint8_t> out;
   const auto idAt = ids.getConstAccessor();
   for (auto it = phase.cbeginValueOn(); it; ++it) {
     const std::int32_t id = idAt.getValue(it.getCoord()), value = *it;
     if (id <= 0) continue;
+    // More particles than voxels: the ids are damaged (checkValues, later, would say so too).
+    if (std::uint64_t(id) > voxels)
+      throw InputError("cannot read " + path + ": damaged (a particle id beyond its voxels)");
     if (value < 1 || value > 255)
       throw InputError("cannot read " + path + ": its phase grid holds " + std::to_string(value) +
                        " on a particle (phases are 1 to 255)");
@@ -378,7 +381,7 @@ SolidVolume readVdb(const std::string& path, const VdbReadOptions& options) {
   auto color = typedGrid<openvdb::Vec3SGrid>(contents, path, "color", "vec3s");
   auto ids = typedGrid<openvdb::Int32Grid>(contents, path, "particle_id", "int32");
   if (const auto phase = typedGrid<openvdb::Int32Grid>(contents, path, "phase", "int32"); phase && ids)
-    volume.particlePhase = particlePhasesOf(*ids, *phase, path);
+    volume.particlePhase = particlePhasesOf(*ids, *phase, path, std::uint64_t(box.volume()));
   contents.grids.clear();
   // Recorded bounds can be edited apart from the values: ids outside them would be dropped unseen.
   const bool recordedBox = unreadGrid(contents, "density") || unreadGrid(contents, "color");

@@ -315,8 +315,10 @@ void ParticleSolidBuilder::sizePhases(double scale) {
 const PlacementResult& ParticleSolidBuilder::place() {
   const ExemplarStats& stats = solid_.stats;
   solid_.timer.start("placement");
-  // Particles sizeFactor times the photo's boxes: that many more voxels per photo pixel for them.
-  const double particleScale = solid_.voxelsPerPixel * solid_.sizing.sizeFactor;
+  // Particles sizeFactor times the photo's boxes (the largest phase's factor with several): that
+  // many more voxels per photo pixel for them.
+  const double particleScale =
+      solid_.voxelsPerPixel * solid_.sizing.sizeFactor * factory_->largestPhaseScale();
   const Dims& dims = options_.dims;
   const int margin =
       options_.boundary == Boundary::Open ? openBoundaryMargin(largestSide(), particleScale) : 0;

@@ -300,19 +300,20 @@ void ParticleFactory::setPhaseScales(std::vector<double> scales) {
   phaseScales_ = std::move(scales);
 }
 
+double ParticleFactory::phaseScale(int phase) const {
+  return phaseScales_.empty() ? 1.0 : phaseScales_[std::size_t(phase)];
+}
+
+double ParticleFactory::largestPhaseScale() const {
+  return phaseScales_.empty() ? 1.0 : *std::max_element(phaseScales_.begin(), phaseScales_.end());
+}
+
 int ParticleFactory::phaseOf(int source) const {
   return source < 0 ? 0 : stats_.particles[std::size_t(source)].phase;
 }
 
 VoxelShape ParticleFactory::make(int width, int height, int depth, Rng& rng, int phase) const {
   checkInterruption();
-  if (!phaseScales_.empty()) {
-    const double scale = phaseScales_[std::size_t(phase)];
-    const auto scaled = [&](int side) {
-      return std::clamp(int(std::lround(side * scale)), 1, kMaxParticleSide);
-    };
-    width = scaled(width), height = scaled(height), depth = scaled(depth);
-  }
   // Hull i was carved from phase i mod K's contours.
   const std::size_t phases = phasePairs_.size(), p = std::size_t(phase);
   const std::size_t ofPhase = hulls_.size() > p ? (hulls_.size() - p + phases - 1) / phases : 0;

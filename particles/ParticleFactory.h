@@ -59,12 +59,18 @@ public:
   /// the box (width, height, depth) voxels (each >= 1) and voxelized; one 6-connected piece in its tight box,
   /// which loses the face layers no voxel centre reached (see voxelize), with its pose. Thread-safe.
   /// Throws std::invalid_argument for a side outside [1, kMaxParticleSide].
-  /// Of several phases (ExemplarStats::phaseCentres), the hull is one carved from `phase`'s contours.
+  /// Of several phases (ExemplarStats::phaseCentres), the hull is one carved from `phase`'s contours
+  /// (any, when the pool holds fewer hulls than phases).
   VoxelShape make(int width, int height, int depth, Rng& rng, int phase = 0) const;
 
-  /// Each phase's particles made this many times larger than asked (its own size factor, where the
-  /// phases' sections unfold to different factors); one value per phase, all 1 at first.
+  /// Each phase's size factor, where the phases' sections unfold to different factors: its
+  /// particles are made at this many times the scale of the others (placement's makeScaled asks
+  /// phaseScale); one value per phase, all 1 at first.
   void setPhaseScales(std::vector<double> scales);
+  /// The phase's size factor (1 until setPhaseScales).
+  double phaseScale(int phase) const;
+  /// The largest phase's size factor: the largest particles' scale.
+  double largestPhaseScale() const;
 
   /// The phase of a photo particle (ParticleSize::source); 0 for none.
   int phaseOf(int source) const;

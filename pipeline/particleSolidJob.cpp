@@ -28,14 +28,15 @@ namespace {
 // The xz and yz photos, one standing for both.
 void analyzePlanePhotos(const ParticleSolidJob& job, ParticleSolidBuilder& builder) {
   if (!job.photoXz && !job.photoYz) {
-    if (!job.pixelSizes.empty())
+    if (!job.pixelSizes.empty() || job.pixelSizesFromFiles)
       throw OptionError(
           "--pixel-sizes brings three planes' photos to one scale: give --photo-xz or --photo-yz");
     return;
   }
   const std::string xzPath = job.photoXz.value_or(*job.photoYz), yzPath = job.photoYz.value_or(*job.photoXz);
   cv::Mat xz = loadPhoto(xzPath), yz = xzPath == yzPath ? xz : loadPhoto(yzPath);
-  if (const auto sizes = planePixelSizes(job.pixelSizes, {job.photo, xzPath, yzPath})) {
+  if (const auto sizes =
+          planePixelSizes(job.pixelSizes, {job.photo, xzPath, yzPath}, job.pixelSizesFromFiles)) {
     const double side = squarePixelSide((*sizes)[0], job.photo);
     const bool oneForBoth = xz.data == yz.data;
     xz = atPixelSize(xz, (*sizes)[1], side, xzPath);

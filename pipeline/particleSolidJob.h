@@ -16,10 +16,11 @@ struct ParticleSolidJob : ParticleSolidOptions {
   /// A material that differs by direction: the photos of its xz and yz planes (z down); one given
   /// stands for both. Both the same as `photo`: the one-photo solid.
   std::optional<std::string> photoXz, photoYz;
-  /// With photoXz or photoYz: the side of a pixel of the xy, xz and yz photos (one unit), to which
-  /// the xz and yz photos are resampled to the xy photo's; empty: the files' resolution metadata
-  /// when all three have it, else one size for all (planePixelSizes).
+  /// With photoXz or photoYz: the side of a pixel of the xy, xz and yz photos (one unit); the xz and
+  /// yz photos are resampled to the xy photo's. Empty: one size for all, or with
+  /// pixelSizesFromFiles the files' resolution metadata (planePixelSizes).
   std::vector<double> pixelSizes;
+  bool pixelSizesFromFiles = false;
   std::string output;  ///< .vdb path
   std::optional<std::string> report;
   std::optional<std::string> preview;   ///< folder for PNGs

@@ -16,12 +16,16 @@ cv::Mat phaseColours(const SolidVolume& volume, const std::string& volumePath) {
     throw InputError(volumePath +
                      " has a phase grid but no phase colours (phase_lab) to sort the photo's particles by");
   cv::Mat centres(int(lab.size()), 3, CV_32F);
-  for (int r = 0; r < centres.rows; ++r)
+  for (int r = 0; r < centres.rows; ++r) {
+    const nlohmann::json& row = lab[std::size_t(r)];
+    if (!row.is_array() || row.size() != 3)
+      throw InputError(volumePath + ": its phase colours (phase_lab) are damaged");
     for (int c = 0; c < 3; ++c) {
-      const nlohmann::json& v = lab[std::size_t(r)][std::size_t(c)];
+      const nlohmann::json& v = row[std::size_t(c)];
       if (!v.is_number()) throw InputError(volumePath + ": its phase colours (phase_lab) are damaged");
       centres.at<float>(r, c) = v.get<float>();
     }
+  }
   return centres;
 }
 

@@ -23,7 +23,8 @@ std::string metres(const PixelSize& size) {
 }  // namespace
 
 std::optional<std::array<PixelSize, 3>> planePixelSizes(const std::vector<double>& given,
-                                                        const std::array<std::string, 3>& paths) {
+                                                        const std::array<std::string, 3>& paths,
+                                                        bool fromFiles) {
   if (!given.empty()) {
     if (given.size() != 3) throw OptionError("--pixel-sizes takes three sizes: the xy, xz and yz photos'");
     std::array<PixelSize, 3> out;
@@ -34,10 +35,12 @@ std::optional<std::array<PixelSize, 3>> planePixelSizes(const std::vector<double
     }
     return out;
   }
+  if (!fromFiles) return std::nullopt;
   std::array<std::optional<PixelSize>, 3> found;
   for (std::size_t i = 0; i < 3; ++i) found[i] = pixelSizeOf(paths[i]);
   const int known = int(found[0].has_value()) + int(found[1].has_value()) + int(found[2].has_value());
-  if (known == 0) return std::nullopt;
+  if (known == 0)
+    throw InputError("none of the three photos gives a pixel size: give --pixel-sizes XY XZ YZ");
   if (known < 3) {
     std::string with, without;
     for (std::size_t i = 0; i < 3; ++i) {

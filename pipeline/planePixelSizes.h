@@ -14,17 +14,18 @@ namespace solidtex {
 using PixelSize = std::array<double, 2>;
 
 /// The pixel sizes of the xy, xz and yz photos: `given` (one square size per photo, as
-/// `--pixel-sizes` takes them), else each file's resolution metadata (pixelSizeOf) when all three
-/// have it; none when neither says (the photos are taken to share one). Throws OptionError for a
-/// given size that is not positive or not three of them, InputError when some files give a size and
-/// others none (naming them).
+/// `--pixel-sizes` takes them), else with `fromFiles` each file's resolution metadata
+/// (pixelSizeOf); none otherwise (the photos are taken to share one). Opt-in, as cameras and
+/// editors write 72 or 96 dpi that say nothing of the subject. Throws OptionError for a given size
+/// that is not positive or not three of them, InputError when a file gives no size (naming it).
 std::optional<std::array<PixelSize, 3>> planePixelSizes(const std::vector<double>& given,
-                                                        const std::array<std::string, 3>& paths);
+                                                        const std::array<std::string, 3>& paths,
+                                                        bool fromFiles);
 
 /// `photo` (of `name`, whose pixels are `size`) resampled so that its pixels are `target` wide and
 /// high: area averaging where it shrinks, linear where it grows; the photo itself when they are
 /// already. Throws InputError when the ratio lies outside [1/8, 8] (photos that far apart do not
-/// show one material at one resolution) or the result is smaller than a photo may be.
+/// show one material at one resolution) or the result is smaller or larger than a photo may be.
 cv::Mat atPixelSize(const cv::Mat& photo, const PixelSize& size, double target, const std::string& name);
 
 /// The xy photo's pixel side, the target of the others: InputError when its pixels are not square

@@ -44,7 +44,7 @@ constexpr std::uint64_t kPairStream = 0x7061697273;   // "pairs"
 struct WeightedPair {
   int width = 0, height = 0;
   double weight = 0;
-  int phase = 0;  ///< the kind of particle whose photo particles have this box
+  int particlePhase = 0;  ///< the kind of particle whose photo particles have this box
 };
 
 using BinPairs = std::array<std::vector<WeightedPair>, kBins>;
@@ -189,7 +189,7 @@ PlacementPilot pilotOf(const PhasePlan& plan, const BinPairs& pairs, const Parti
     while (n < kMaxPilotShapes) {
       ++n;
       const WeightedPair& pair = binPairs[all[drawByWeight(binPairs, all, rng)]];
-      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng, pair.phase);
+      const ParticleSize size = factory.pickDepth(pair.width, pair.height, rng, pair.particlePhase);
       const auto voxels = double(placement::detail::makeScaled(factory, size, plan.scale, rng).voxelCount());
       sum += voxels;
       sumOfSquares += voxels * voxels;
@@ -426,7 +426,8 @@ private:
     bool placed = false;
     for (std::optional<std::size_t> pair = drawUntried(); pair && !placed;) {
       const std::optional<std::size_t> next = untried.empty() ? std::nullopt : std::optional(drawUntried());
-      if (next) phase_->shapes.makeAhead({bin, pairs[*next].width, pairs[*next].height, pairs[*next].phase});
+      if (next)
+        phase_->shapes.makeAhead({bin, pairs[*next].width, pairs[*next].height, pairs[*next].particlePhase});
       placed = tryPair(pairs[*pair], bin);
       if (placed) {
         failures[*pair] = 0;
@@ -438,7 +439,7 @@ private:
     }
     for (std::size_t i = pairs.size(); i-- > 0;)
       if (failures[i] >= kFailuresToRetire) {
-        phase_->shapes.forget({bin, pairs[i].width, pairs[i].height, pairs[i].phase});
+        phase_->shapes.forget({bin, pairs[i].width, pairs[i].height, pairs[i].particlePhase});
         pairs.erase(pairs.begin() + std::ptrdiff_t(i));
         failures.erase(failures.begin() + std::ptrdiff_t(i));
       }
@@ -447,7 +448,7 @@ private:
 
   bool tryPair(const WeightedPair& pair, int bin) {
     const placement::detail::ReadyShape shape =
-        phase_->shapes.take({bin, pair.width, pair.height, pair.phase});
+        phase_->shapes.take({bin, pair.width, pair.height, pair.particlePhase});
     return !shape.fit.voxels.empty() && place(shape.fit, shape.size, bin);
   }
 
@@ -522,8 +523,9 @@ private:
     // The field takes the particle while the next shape is made (place() waits for it): its
     // update and the shape's voxelization are the two largest costs of a try.
     fieldUpdate_.run([this] { field_.insert(volumeVoxels_); });
-    result_.particles.push_back(
-        {id, origin, shape.dims, size.source, bin, shape.voxels.size(), phase_->plan.scale, shape.pose});
+    result_.particles.push_back({id, origin, shape.dims, size.source, bin, shape.voxels.size(),
+                                 phase_->plan.scale * factory_.phaseScale(factory_.phaseOf(size.source)),
+                                 shape.pose});
     ++result_.placedPerBin[std::size_t(bin)];
     placedVoxels_ += counted;
     // A particle counts by its share inside the counted box: the margin's walls keep large particles

@@ -205,7 +205,7 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
       if (xz.empty())
         throw OptionError(
             "--pixel-sizes brings three planes' photos to one scale: give --photo-xz or --photo-yz");
-      const std::array<PixelSize, 3> sizes = *planePixelSizes(pixelSizes, {name, xzName, yzName});
+      const std::array<PixelSize, 3> sizes = *planePixelSizes(pixelSizes, {name, xzName, yzName}, false);
       const double side = squarePixelSide(sizes[0], name);
       const bool oneForBoth = xz.data == yz.data && sizes[1] == sizes[2];
       xz = atPixelSize(xz, sizes[1], side, xzName);
@@ -217,6 +217,7 @@ py::dict particles(const py::object& photo, const py::kwargs& kwargs) {
       outputs.emplace();
       for (const std::string& input : {name, xzName, yzName})
         if (!input.empty() && input != "array") outputs->addInput(input);
+      if (options.phases.maskPath) outputs->addInput(*options.phases.maskPath);
       if (output) outputs->addFile("output", *output, {".vdb"});
       if (reportPath) outputs->addFile("report", *reportPath, {".json"});
     }
@@ -276,9 +277,10 @@ py::object analyze(const py::object& photo, const py::kwargs& kwargs) {
       if (reportPath) outputs->addFile("report", *reportPath, {".json"});
     }
     ExemplarStats stats = analyzeExemplar(image, name, options);
-    if (const std::optional<ParticlePhases> found = findPhases(stats, phases, seed))
-      assignPhases(stats, *found);
+    const std::optional<ParticlePhases> found = findPhases(stats, phases, seed);
+    if (found) assignPhases(stats, *found);
     report = toJson(stats);
+    if (found && !found->bic.empty()) report["phase_bic"] = found->bic;
     cv::Mat labelImage = cv::Mat::zeros(image.rows, image.cols, CV_32S);
     for (const Particle2D& p : stats.particles) labelImage(p.box).setTo(p.id, p.mask);
     particleLabels.assign(labelImage.begin<std::int32_t>(), labelImage.end<std::int32_t>());

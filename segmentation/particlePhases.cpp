@@ -35,19 +35,21 @@ int nearestRow(const float* lab, const cv::Mat& centres) {
   return best;
 }
 
-// Centres reordered darkest first, and every sample's phase by its nearest centre.
-ParticlePhases sortedPhases(const cv::Mat& samples, const cv::Mat& centres, std::string method) {
-  std::vector<int> order(std::size_t(centres.rows));
+// Centres reordered darkest first, and each sample's phase its cluster's new rank.
+ParticlePhases sortedPhases(const cv::Mat& centres, const std::vector<int>& labels, std::string method) {
+  std::vector<int> order(std::size_t(centres.rows)), rank(std::size_t(centres.rows));
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return centres.at<float>(a, 0) < centres.at<float>(b, 0); });
   ParticlePhases out;
   out.method = std::move(method);
   out.centres.create(centres.rows, 3, CV_32F);
-  for (int r = 0; r < centres.rows; ++r) centres.row(order[std::size_t(r)]).copyTo(out.centres.row(r));
-  out.phaseOf.resize(std::size_t(samples.rows));
-  for (int i = 0; i < samples.rows; ++i)
-    out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), out.centres);
+  for (int r = 0; r < centres.rows; ++r) {
+    centres.row(order[std::size_t(r)]).copyTo(out.centres.row(r));
+    rank[std::size_t(order[std::size_t(r)])] = r;
+  }
+  out.phaseOf.reserve(labels.size());
+  for (int label : labels) out.phaseOf.push_back(rank[std::size_t(label)]);
   return out;
 }
 
@@ -146,7 +148,7 @@ ParticlePhases classifyParticles(const ExemplarStats& stats, int phases, std::ui
   const cv::Mat samples = particleLab(stats);
   if (phases > 0) {
     const Clustering c = cluster(samples, phases, seed);
-    return sortedPhases(samples, c.centres, "k-means of the particles' colours in CIE L*a*b*");
+    return sortedPhases(c.centres, c.labels, "k-means of the particles' colours in CIE L*a*b*");
   }
   std::vector<double> bic;
   Clustering best;
@@ -155,7 +157,7 @@ ParticlePhases classifyParticles(const ExemplarStats& stats, int phases, std::ui
     bic.push_back(c.bic);
     if (k == 1 || c.bic < best.bic) best = std::move(c);
   }
-  ParticlePhases out = sortedPhases(samples, best.centres,
+  ParticlePhases out = sortedPhases(best.centres, best.labels,
                                     "k-means of the particles' colours in CIE L*a*b*, the count by BIC");
   out.bic = std::move(bic);
   return out;

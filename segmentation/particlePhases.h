@@ -25,11 +25,15 @@ struct PhaseOptions {
   /// Asks for phases at all: a count other than one, or a mask.
   bool any() const { return phases != 1 || maskPath.has_value(); }
 };
+
+/// PhaseOptions::phases for the count the colours' BIC chooses (`--phases auto`).
 inline constexpr int kAutoPhases = 0;
 
 /// The particles' phases and how they were found.
 struct ParticlePhases {
-  cv::Mat centres;           ///< K x 3 CV_32F, CIE L*a*b* (D65) of each phase, darkest first
+  /// K x 3 CV_32F, CIE L*a*b* (D65) of each phase: darkest first (classifyParticles), in the
+  /// mask's order of values (particlePhasesOfLabels), as given (nearestPhases).
+  cv::Mat centres;
   std::vector<int> phaseOf;  ///< per ExemplarStats::particles index, 0..K-1
   /// With the count chosen automatically: the Bayesian information criterion of 1, 2, ... phases
   /// (the lowest won); empty otherwise.

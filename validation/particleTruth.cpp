@@ -258,7 +258,8 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
 }
 
 void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) {
-  if (!(c.meanRadius >= 1)) throw OptionError("--small-radius and --large-radius must be at least 1 voxel");
+  if (!(c.meanRadius >= 1))
+    throw OptionError("--small-radius, --medium-radius and --large-radius must be at least 1 voxel");
   if (!(c.share > 0 && c.share <= 1)) throw OptionError("--large-share must be between 0 and 1");
   if (!(c.radiusSpread >= 0 && c.radiusSpread <= 1)) throw OptionError("--spread must be between 0 and 1");
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the

@@ -12,9 +12,10 @@ constexpr std::uint64_t kShapeStream = 0x7368617065;  // "shape"
 }  // namespace
 
 VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, double scale, Rng& rng) {
-  const auto scaled = [scale](int pixels) { return int(std::max(1.0, std::round(pixels * scale))); };
-  return factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng,
-                      factory.phaseOf(size.source));
+  const int phase = factory.phaseOf(size.source);
+  const double kindScale = scale * factory.phaseScale(phase);
+  const auto scaled = [kindScale](int pixels) { return int(std::max(1.0, std::round(pixels * kindScale))); };
+  return factory.make(scaled(size.width), scaled(size.height), scaled(size.depth), rng, phase);
 }
 
 ShapeSupply::ShapeSupply(const ParticleFactory& factory, std::uint64_t seed, int phase, double scale)

@@ -24,7 +24,8 @@ struct ReadyShape {
 /// the pair that shapes are made for.
 using ShapeKey = std::array<int, 4>;
 
-/// A particle of `size` pixels made at `scale` voxels per pixel, each edge at least one voxel.
+/// A particle of `size` pixels made at `scale` voxels per pixel times its phase's size factor
+/// (ParticleFactory::phaseScale of its source's phase), each edge at least one voxel.
 VoxelShape makeScaled(const ParticleFactory& factory, const ParticleSize& size, double scale, Rng& rng);
 
 /// The shapes of one phase. The n-th shape of a pair comes from its own stream (seed, phase, bin,

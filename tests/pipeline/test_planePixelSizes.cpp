@@ -31,22 +31,23 @@ std::string tiff(const std::string& name, float perCm) {
 
 TEST(PlanePixelSizes, TheFilesResolutionsGiveThePixelSizes) {
   const std::string xy = tiff("xy", 1000), xz = tiff("xz", 500), bare = tiff("bare", 0);
-  const auto sizes = planePixelSizes({}, {xy, xz, xz});
+  const auto sizes = planePixelSizes({}, {xy, xz, xz}, true);
   ASSERT_TRUE(sizes.has_value());
   EXPECT_NEAR((*sizes)[0][0], 1e-5, 1e-9);  // 1000 pixels a centimetre: 10 micrometres
   EXPECT_NEAR((*sizes)[1][1], 2e-5, 1e-9);
-  EXPECT_FALSE(planePixelSizes({}, {bare, bare, bare}).has_value());
+  EXPECT_FALSE(planePixelSizes({}, {xy, xz, xz}, false).has_value());  // only when asked
+  EXPECT_THROW(planePixelSizes({}, {bare, bare, bare}, true), InputError);
   // Some files say and one does not: which scale it has cannot be known.
   try {
-    planePixelSizes({}, {xy, xz, bare});
+    planePixelSizes({}, {xy, xz, bare}, true);
     ADD_FAILURE() << "a file without a pixel size was taken";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(bare), std::string::npos) << e.what();
   }
   // Given sizes win over the files'.
-  EXPECT_EQ((*planePixelSizes({1, 2, 3}, {bare, bare, bare}))[2], (PixelSize{3, 3}));
-  EXPECT_THROW(planePixelSizes({1, 0, 1}, {bare, bare, bare}), OptionError);
-  EXPECT_THROW(planePixelSizes({1, 2}, {bare, bare, bare}), OptionError);
+  EXPECT_EQ((*planePixelSizes({1, 2, 3}, {bare, bare, bare}, true))[2], (PixelSize{3, 3}));
+  EXPECT_THROW(planePixelSizes({1, 0, 1}, {bare, bare, bare}, false), OptionError);
+  EXPECT_THROW(planePixelSizes({1, 2}, {bare, bare, bare}, false), OptionError);
 }
 
 TEST(PlanePixelSizes, PhotosAreResampledToTheXyPhotosPixelsWithinAReconcilableRatio) {
