@@ -340,6 +340,9 @@ io::detail::VdbContents gridsFor(const std::string& path, const VdbReadOptions& 
   return io::detail::readVdbGrids(path, names);
 }
 
+// Ids a phase table may reach whatever the box: a 2048^3 solid of 32-voxel particles.
+constexpr std::uint64_t kMostParticleIds = std::uint64_t(1) << 28;
+
 // Each particle's phase (phase grid value - 1) from the voxels the two grids share.
 std::vector<std::uint8_t> particlePhasesOf(const openvdb::Int32Grid& ids, const openvdb::Int32Grid& phase,
                                            const std::string& path, std::uint64_t voxels) {
@@ -348,8 +351,8 @@ std::vector<std::uint8_t> particlePhasesOf(const openvdb::Int32Grid& ids, const 
   for (auto it = phase.cbeginValueOn(); it; ++it) {
     const std::int32_t id = idAt.getValue(it.getCoord()), value = *it;
     if (id <= 0) continue;
-    // More particles than voxels: the ids are damaged (checkValues, later, would say so too).
-    if (std::uint64_t(id) > voxels)
+    // A brick's file holds the whole volume's ids, more than its own voxels; beyond both, damage.
+    if (std::uint64_t(id) > std::max(voxels, kMostParticleIds))
       throw InputError("cannot read " + path + ": damaged (a particle id beyond its voxels)");
     if (value < 1 || value > 255)
       throw InputError("cannot read " + path + ": its phase grid holds " + std::to_string(value) +
