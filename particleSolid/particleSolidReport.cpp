@@ -88,13 +88,6 @@ nlohmann::json textureJson(const TextureChoice& choice) {
   return json;
 }
 
-nlohmann::json phaseCentresJson(const cv::Mat& centres) {
-  nlohmann::json out = nlohmann::json::array();
-  for (int r = 0; r < centres.rows; ++r)
-    out.push_back({centres.at<float>(r, 0), centres.at<float>(r, 1), centres.at<float>(r, 2)});
-  return out;
-}
-
 // Each phase's colour, share of the photo and of the volume, particles in both.
 nlohmann::json phasesJson(const ParticleSolid& solid) {
   const ExemplarStats& stats = solid.stats;
@@ -110,7 +103,7 @@ nlohmann::json phasesJson(const ParticleSolid& solid) {
   }
   const double all = double(solid.placement.counted.dims().count());
   nlohmann::json classes = nlohmann::json::array();
-  const nlohmann::json centres = phaseCentresJson(stats.phaseCentres);
+  const nlohmann::json centres = phaseColoursJson(stats.phaseCentres);
   for (std::size_t k = 0; k < std::size_t(phases); ++k)
     classes.push_back({{"phase", k + 1},
                        {"lab", centres[k]},
@@ -152,7 +145,7 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
     metadata["exemplar_yz"] = std::filesystem::path(solid.planeStats[1].name).filename().string();
   }
   if (solid.stats.phaseCentres.rows > 1)
-    metadata["phase_lab"] = phaseCentresJson(solid.stats.phaseCentres).dump();
+    metadata["phase_lab"] = phaseColoursJson(solid.stats.phaseCentres).dump();
   const SizingUncertainty& u = solid.sizing.uncertainty;
   if (!u.bandVolumes.empty())
     metadata["particle_volume_cdf_band"] =

@@ -9,6 +9,7 @@
 #include "io/vdbIO.h"
 #include "pipeline/jobOutputs.h"
 #include "segmentation/particlePhases.h"
+#include "segmentation/reportJson.h"
 
 namespace solidtex {
 namespace {
@@ -49,11 +50,7 @@ nlohmann::json classColoursJson(const std::vector<ParticleClass>& classes) {
   std::vector<cv::Vec3f> linear;
   for (const ParticleClass& c : classes)
     linear.emplace_back(srgbToLinear(c.srgb[0]), srgbToLinear(c.srgb[1]), srgbToLinear(c.srgb[2]));
-  const cv::Mat lab = labOfColours(linear);
-  nlohmann::json out = nlohmann::json::array();
-  for (int r = 0; r < lab.rows; ++r)
-    out.push_back({lab.at<float>(r, 0), lab.at<float>(r, 1), lab.at<float>(r, 2)});
-  return out;
+  return phaseColoursJson(labOfColours(linear));
 }
 
 }  // namespace

@@ -19,12 +19,12 @@ nlohmann::json histogramJson(const AreaHistogram& h) {
 // Each phase's colour, particles, share of the photo and own area histogram.
 nlohmann::json phasesJson(const ExemplarStats& stats) {
   const std::vector<double> fractions = phaseAreaFractions(stats);
+  const nlohmann::json colours = phaseColoursJson(stats.phaseCentres);
   nlohmann::json out = nlohmann::json::array();
   for (int k = 0; k < stats.phaseCentres.rows; ++k) {
     const ExemplarStats phase = phaseStats(stats, k);
-    const float* lab = stats.phaseCentres.ptr<float>(k);
     out.push_back({{"phase", k + 1},
-                   {"lab", {lab[0], lab[1], lab[2]}},
+                   {"lab", colours[std::size_t(k)]},
                    {"particle_count", phase.particles.size()},
                    {"area_fraction", fractions[std::size_t(k)]},
                    {"histogram", histogramJson(phase.histogram)}});
@@ -33,6 +33,13 @@ nlohmann::json phasesJson(const ExemplarStats& stats) {
 }
 
 }  // namespace
+
+nlohmann::json phaseColoursJson(const cv::Mat& centres) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int r = 0; r < centres.rows; ++r)
+    out.push_back({centres.at<float>(r, 0), centres.at<float>(r, 1), centres.at<float>(r, 2)});
+  return out;
+}
 
 nlohmann::json toJson(const ExemplarStats& stats) {
   const bool phases = stats.phaseCentres.rows > 1;

@@ -11,4 +11,8 @@ namespace solidtex {
 /// ratios} and `size_pairs` [{width, height, count}].
 nlohmann::json toJson(const ExemplarStats& stats);
 
+/// Phase colours (K x 3 CV_32F, CIE L*a*b*, as ExemplarStats::phaseCentres) as [[L, a, b], ...]: the
+/// report's and the `.vdb`'s `phase_lab`.
+nlohmann::json phaseColoursJson(const cv::Mat& centres);
+
 }  // namespace solidtex
