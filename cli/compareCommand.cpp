@@ -75,9 +75,9 @@ Action addCompareCommand(CLI::App& app) {
   auto plane = std::make_shared<std::string>();
   command
       ->add_option("--plane", *plane,
-                   "Particles: cut only the axis sections of this plane (xy, xz or yz) and no oblique ones, "
-                   "for the photo of that plane of an anisotropic material (no materials descriptors, which "
-                   "average every axis)")
+                   "The photo is of this plane (xy, xz or yz) of a material that differs by direction: "
+                   "particles, cut only its axis sections and no oblique ones (no materials descriptors, "
+                   "which average every axis); continuous, take only its slices as the axis slices")
       ->check(CLI::IsMember({"xy", "xz", "yz"}));
   command->add_option("--seed", job->sections.seed, "Seed for the planes and patches")->capture_default_str();
   command->add_option("--report", job->report, "Write the comparison as JSON");

@@ -132,6 +132,13 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
   command->add_option("exemplar", job->exemplar, "Exemplar image (PNG, JPEG, TIFF, EXR) or volume (.vdb)")
       ->required();
   command->add_option("-o,--output", job->output, "Output volume (.vdb)")->required();
+  command->add_option("--photo-xz", job->photoXz,
+                      "Photo exemplars: a material that differs by direction, the exemplar of its xz plane "
+                      "(x across, z down; the exemplar is then the xy plane's, one size for all). Alone, it "
+                      "stands for the yz plane too");
+  command->add_option(
+      "--photo-yz", job->photoYz,
+      "The exemplar of the yz plane (y across, z down); alone, it stands for the xz plane too");
   command
       ->add_option("--method", *method,
                    "Photo exemplars: chen-wang (histogram matching), kopf (baseline) or skeletal (chen-wang "
@@ -175,8 +182,9 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
                       "Volume exemplars and grown solids: synthesise bricks of this edge one at a time (same "
                       "voxels, less memory; grown default: the whole volume when it fits in memory). Volume "
                       "exemplars: an edge dividing every side; mpirun's processes share the bricks");
-  for (const char* name : {"--method", "--wavelet-levels", "--neighborhoods", "--distance",
-                           "--similarity-search", "--iterations", "--control", "--grow-from"})
+  for (const char* name :
+       {"--method", "--wavelet-levels", "--neighborhoods", "--distance", "--similarity-search",
+        "--iterations", "--control", "--grow-from", "--photo-xz", "--photo-yz"})
     kinds->photoOnly.push_back(command->get_option(name));
   command->add_option("--seed", o.seed, "Random seed: same seed, same volume")->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)");
@@ -225,6 +233,9 @@ Action addSynthesizeCommand(CLI::App& app, const std::string& commandLine) {
         growSeedEdge(*growFrom >= 0 ? std::optional<int>(*growFrom) : std::nullopt, !dims->empty(), out);
     if (seedEdge > 0) {
       refuseOptionsOf({command->get_option("--region"), command->get_option("--field")}, "volume (.vdb)");
+      if (job->photoXz || job->photoYz)
+        throw OptionError("--photo-xz and --photo-yz make solids up to --size " +
+                          std::to_string(kLargestDirectPhotoSolid) + ", not grown ones");
       SynthesizeVolumeJob& v = *volumeJob;
       v.synthesis.dims = out;
       if (*brickEdge < 0) throw OptionError("--bricks must be positive, got " + std::to_string(*brickEdge));

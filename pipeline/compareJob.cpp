@@ -360,17 +360,19 @@ cv::Mat continuousPlot(const cv::Mat& exemplar, const cv::Mat& reference, const 
 nlohmann::json compareContinuous(const CompareJob& job, const cv::Mat& exemplar, const SolidVolume& volume,
                                  const cv::Mat& reference, cv::Mat* plot) {
   if (job.truth) throw OptionError("--truth is for particle solids; give --reference for continuous solids");
-  if (job.sections.planeAxis >= 0) throw OptionError("--plane is for particle solids");
   if (job.brickEdge > 0) throw OptionError("--bricks measures the seams of particle solids");
   if (job.measures && job.measures->any() && !job.measuresClasses())
     throw OptionError(
         "--measures on a continuous solid needs --phases K or --phase-mask (its colour classes)");
-  const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, job.quality);
+  ContinuousQualityOptions qualityOptions = job.quality;
+  qualityOptions.planeAxis = job.sections.planeAxis;
+  const ContinuousQuality quality = measureContinuousSolid(volume, exemplar, reference, qualityOptions);
   nlohmann::json report = {{"mode", "continuous"},
                            {"exemplar", job.photo},
                            {"volume", job.volume},
                            {"dims", {volume.dims.x, volume.dims.y, volume.dims.z}},
-                           {"quality", continuousQualityJson(quality, job.quality)}};
+                           {"quality", continuousQualityJson(quality, qualityOptions)}};
+  if (job.sections.planeAxis >= 0) report["plane"] = planeNameOf(job.sections.planeAxis);
   if (job.reference) report["reference"] = *job.reference;
   MaterialsOptions materials = job.materials;
   if (job.measures) materials.measures = *job.measures;

@@ -1,8 +1,9 @@
 #include "pipeline/synthesizeJob.h"
 
-#include <utility>
-
+#include <array>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 #include "Version.h"
 #include "common/Error.h"
@@ -13,6 +14,7 @@
 #include "pipeline/continuousQualityReport.h"
 #include "pipeline/jobOutputs.h"
 #include "synthesis/synthesizeSolid.h"
+#include "validation/sectionStatistics.h"
 #include "voxel/writePreviews.h"
 
 namespace solidtex {
@@ -78,6 +80,33 @@ nlohmann::json synthesisReport(const SynthesisOptions& o, const SynthesisStatist
   return report;
 }
 
+namespace {
+
+/// The yz, xz and xy planes' exemplars when the job has plane exemplars.
+std::optional<std::array<std::string, 3>> planeExemplarPaths(const SynthesizeJob& job) {
+  if (!job.photoXz && !job.photoYz) return std::nullopt;
+  return std::array<std::string, 3>{job.photoYz.value_or(*job.photoXz), job.photoXz.value_or(*job.photoYz),
+                                    job.exemplar};
+}
+
+}  // namespace
+
+nlohmann::json planeExemplarsReport(const SolidVolume& volume, const std::array<cv::Mat, 3>& planes,
+                                    const std::array<std::string, 3>& names,
+                                    const ContinuousQualityOptions* quality) {
+  nlohmann::json out;
+  for (int axis = 0; axis < 3; ++axis) {
+    nlohmann::json& plane = out[planeNameOf(axis)];
+    plane["exemplar"] = names[axis];
+    if (!quality) continue;
+    ContinuousQualityOptions options = *quality;
+    options.planeAxis = axis;
+    plane["quality"] =
+        continuousQualityJson(measureContinuousSolid(volume, planes[axis], {}, options), options);
+  }
+  return out;
+}
+
 nlohmann::json runSynthesize(const SynthesizeJob& job) {
   namespace fs = std::filesystem;
   // Peak resident memory per voxel: 663 MiB for chen-wang at 256^3.
@@ -91,13 +120,21 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   addVolumeExports(outputs, job.exports);
 
   const cv::Mat exemplar = loadPhoto(job.exemplar);
+  const std::optional<std::array<std::string, 3>> planePaths = planeExemplarPaths(job);
+  std::array<cv::Mat, 3> planes;
+  if (planePaths)
+    for (int axis = 0; axis < 2; ++axis) {
+      outputs.addInput((*planePaths)[axis]);
+      planes[axis] = loadPhoto((*planePaths)[axis]);
+    }
+  planes[2] = exemplar;
   SynthesisOptions options = job.synthesis;
   options.exemplarName = fs::path(job.exemplar).filename().string();
   if (job.control) options.control = loadPhoto(*job.control);
   ProgressLine progress(job.progress);
   if (job.progress)
     options.progress = [&](const std::string& step, double fraction) { progress.update(step, fraction); };
-  SynthesisResult result = synthesizeSolid(exemplar, options);
+  SynthesisResult result = planePaths ? synthesizeSolid(planes, options) : synthesizeSolid(exemplar, options);
   progress.done();
 
   result.volume.metadata["solidtex_version"] = SOLIDTEX_VERSION;
@@ -105,13 +142,23 @@ nlohmann::json runSynthesize(const SynthesizeJob& job) {
   result.volume.metadata["seed"] = std::to_string(options.seed);
   result.volume.metadata["exemplar"] = options.exemplarName;
   std::optional<ContinuousQuality> quality;
-  if (job.measure) {
+  if (job.measure && !planePaths) {
     progress.update("measuring the slices against the exemplar");
     quality = measureContinuousSolid(result.volume, exemplar, {}, job.quality);
     progress.done();
   }
   nlohmann::json report =
       synthesisReport(options, result.statistics, quality ? &*quality : nullptr, job.quality);
+  if (planePaths) {
+    std::array<std::string, 3> names;
+    for (int axis = 0; axis < 3; ++axis) names[axis] = fs::path((*planePaths)[axis]).filename().string();
+    for (int axis = 0; axis < 2; ++axis)
+      result.volume.metadata["exemplar_" + planeNameOf(axis)] = names[axis];
+    if (job.measure) progress.update("measuring each plane's slices against its exemplar");
+    report["planes"] =
+        planeExemplarsReport(result.volume, planes, names, job.measure ? &job.quality : nullptr);
+    progress.done();
+  }
   report["solidtex_version"] = SOLIDTEX_VERSION;
   report["command"] = "synthesize";
   report["outputs"] = {{"vdb", job.output}};

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 
@@ -12,7 +13,10 @@ namespace solidtex {
 
 /// `solidtex synthesize`: an exemplar without particles to a continuous solid (.vdb, report, previews).
 struct SynthesizeJob {
-  std::string exemplar;
+  std::string exemplar;  ///< the xy plane's when photoXz or photoYz is given
+  /// A material that differs by direction: the exemplars of its xz and yz planes (x or y across, z
+  /// down), one size with `exemplar`; either alone stands for both
+  std::optional<std::string> photoXz, photoYz;
   std::string output;                  ///< .vdb path
   SynthesisOptions synthesis;          ///< its control map is loaded from `control`
   std::optional<std::string> control;  ///< greyscale PNG the exemplar's size
@@ -30,6 +34,13 @@ struct SynthesizeJob {
 nlohmann::json synthesisReport(const SynthesisOptions& options, const SynthesisStatistics& statistics,
                                const ContinuousQuality* quality = nullptr,
                                const ContinuousQualityOptions& qualityOptions = {});
+
+/// The report's `planes` of a solid made from plane exemplars (yz, xz, xy, as synthesizeSolid takes
+/// them): each plane's exemplar name and, when `quality` is given, that plane's slices measured
+/// against it (ContinuousQualityOptions::planeAxis).
+nlohmann::json planeExemplarsReport(const SolidVolume& volume, const std::array<cv::Mat, 3>& planes,
+                                    const std::array<std::string, 3>& names,
+                                    const ContinuousQualityOptions* quality);
 
 /// Runs the job, writes the requested files and returns the report.
 nlohmann::json runSynthesize(const SynthesizeJob& job);

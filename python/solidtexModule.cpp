@@ -359,12 +359,28 @@ py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywor
   const std::optional<std::int64_t> growFrom = keywords.integer("grow_from"),
                                     bricks = keywords.integer("bricks");
   const std::optional<std::vector<int>> dims = keywords.integers("dims", 3);
+  const py::object xzPhoto = keywords.take("photo_xz"), yzPhoto = keywords.take("photo_yz");
   keywords.finish();
   options.exemplarName = std::filesystem::path(name).filename().string();
+  // A material that differs by direction: the yz, xz and xy planes' exemplars, one given for both.
+  std::array<cv::Mat, 3> planes;
+  std::array<std::string, 3> planeNames;
+  if (!yzPhoto.is_none()) planes[0] = photoOf(yzPhoto, planeNames[0], "photo_yz");
+  if (!xzPhoto.is_none()) planes[1] = photoOf(xzPhoto, planeNames[1], "photo_xz");
+  if (planes[0].empty()) planes[0] = planes[1], planeNames[0] = planeNames[1];
+  if (planes[1].empty()) planes[1] = planes[0], planeNames[1] = planeNames[0];
+  planes[2] = exemplar, planeNames[2] = name;
+  const bool byPlane = !planes[0].empty();
+  for (std::string& planeName : planeNames) planeName = std::filesystem::path(planeName).filename().string();
   const Dims out =
       dims ? Dims{(*dims)[0], (*dims)[1], (*dims)[2]} : Dims{options.size, options.size, options.size};
   const std::optional<int> asked = growFrom ? std::optional<int>(int(*growFrom)) : std::nullopt;
   if (const int seedEdge = growSeedEdge(asked, dims.has_value(), out); seedEdge > 0) {
+    runParsing([&] {
+      if (byPlane)
+        throw OptionError("photo_xz and photo_yz make solids up to size " +
+                          std::to_string(kLargestDirectPhotoSolid) + ", not grown ones");
+    });
     GrowOptions grow;
     grow.seed = options;
     grow.seed.size = seedEdge;
@@ -383,11 +399,15 @@ py::dict photoSynthesis(const cv::Mat& exemplar, const std::string& name, Keywor
       line.update(step, fraction);
       checkInterruption();
     };
-    result = synthesizeSolid(exemplar, options);
+    result = byPlane ? synthesizeSolid(planes, options) : synthesizeSolid(exemplar, options);
     line.done();
     std::optional<ContinuousQuality> quality;
-    if (measure) quality = measureContinuousSolid(result.volume, exemplar, {}, {});
+    if (measure && !byPlane) quality = measureContinuousSolid(result.volume, exemplar, {}, {});
     report = synthesisReport(options, result.statistics, quality ? &*quality : nullptr, {});
+    const ContinuousQualityOptions defaults;
+    if (byPlane)
+      report["planes"] =
+          planeExemplarsReport(result.volume, planes, planeNames, measure ? &defaults : nullptr);
     report["solidtex_version"] = SOLIDTEX_VERSION;
     report["command"] = "synthesize";
   });
@@ -621,7 +641,9 @@ PYBIND11_MODULE(solidtex, m) {
         "volume (a .vdb path, or a numpy array (Z, Y, X) of densities or (Z, Y, X, 3) of linear RGB): a "
         "dict of numpy arrays (color, or density for a density volume) and the report. Keywords as the "
         "command line's options: size, seed, threads, levels, k, pca_dims; photos: method, "
-        "wavelet_levels, neighborhoods, distance, similarity_search, iterations, control; volumes: dims, "
+        "wavelet_levels, neighborhoods, distance, similarity_search, iterations, control, photo_xz and "
+        "photo_yz (a material that differs by direction: the exemplar is then the xy plane's; the report's "
+        "planes rate each plane's slices against its own); volumes: dims, "
         "region, jitter, exclusion, appearance, corrections, field, periodic. measure=False skips the "
         "quality measure; progress=True shows the progress line.");
   m.def("compare", &compare, py::arg("photo"), py::arg("volume"),

@@ -1,5 +1,6 @@
 #include "synthesis/synthesizeSolid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "common/interruption.h"
 #include "common/secondsSince.h"
 #include "common/srgb.h"
+#include "synthesis/detail/AxisExemplars.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/ExemplarPyramid.h"
 #include "synthesis/detail/HaarPyramid.h"
@@ -149,6 +151,11 @@ std::vector<int> validate(const cv::Mat& exemplar, const SynthesisOptions& o) {
   return n;
 }
 
+/// Eq. 6's phi: how often each exemplar neighbourhood would be matched if every one were equally
+/// often (or as the control map asks), each axis spreading its slice neighbourhoods over its own.
+std::vector<double> expectedMatches(const SliceCentreGrid& grid, const ExemplarNeighborhoods& en,
+                                    const AxisExemplars& axes, const std::vector<float>& control);
+
 /// The control value at every valid neighbourhood centre (phi(i)), or empty.
 std::vector<float> controlAtCentres(const ExemplarNeighborhoods& en, const std::vector<float>& control) {
   if (control.empty()) return {};
@@ -158,8 +165,21 @@ std::vector<float> controlAtCentres(const ExemplarNeighborhoods& en, const std::
   return out;
 }
 
+std::vector<double> expectedMatches(const SliceCentreGrid& grid, const ExemplarNeighborhoods& en,
+                                    const AxisExemplars& axes, const std::vector<float>& control) {
+  if (axes.planeHeight == 0)
+    return expectedCounts(double(grid.count()), std::size_t(en.count()), controlAtCentres(en, control));
+  std::vector<double> phi(std::size_t(en.count()), 0.0);
+  for (int axis = 0; axis < 3; ++axis)
+    std::fill(phi.begin() + axes.first[axis], phi.begin() + axes.end[axis],
+              double(grid.perAxis()) / axes.count(axis));
+  return phi;
+}
+
 /// The state carried from one level to the next.
 struct PyramidState {
+  int planes = 1;      ///< 1: one exemplar; 3: the tall image of three planes' exemplars (AxisExemplars)
+  AxisExemplars axes;  ///< the last level's
   WorkVolume volume;
   std::vector<std::int64_t> indexHistogram;  ///< slice neighbourhoods matched to each exemplar one
 };
@@ -192,25 +212,29 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   const int N = o.size >> (o.levels - 1 - l);
   const NeighborhoodShape shape{neighborhood, o.distance == NeighborhoodDistance::Wavelet};
   const ExemplarNeighborhoods en = buildExemplarNeighborhoods(ex, shape, o.pcaDims);
+  const AxisExemplars& axes = state.axes =
+      axisExemplarsOf(en, state.planes > 1 ? ex.height / state.planes : 0);
+  const int candidates = axes.count(0);  // each axis searches as many
   const SliceCentreGrid centres{N, o.sparseStep};
-  const bool exhaustive = chenWang && en.count() < o.exhaustiveBelow &&
-                          double(centres.count()) * en.count() <= o.exhaustiveBudget;
+  const bool exhaustive = chenWang && candidates < o.exhaustiveBelow &&
+                          double(centres.count()) * candidates <= o.exhaustiveBudget;
   SimilaritySets sets;
-  std::unique_ptr<KdTree> tree;
+  std::vector<std::unique_ptr<KdTree>> trees;
   const bool approximate =
       o.similaritySearch == SimilaritySearch::Approximate ||
-      (o.similaritySearch == SimilaritySearch::Automatic && en.count() >= o.approximateFrom);
-  if (chenWang && !exhaustive)
-    sets = approximate ? buildApproximateSimilaritySets(en, o.k, o.minSeparation)
-                       : buildSimilaritySets(en, o.k, o.minSeparation);
-  if (!chenWang) tree = std::make_unique<KdTree>(en.reduced.data(), en.count(), en.reducedDims());
+      (o.similaritySearch == SimilaritySearch::Automatic && candidates >= o.approximateFrom);
+  if (chenWang && !exhaustive) sets = buildPlaneSimilaritySets(en, axes, o.k, o.minSeparation, approximate);
+  if (!chenWang)
+    for (int axis = 0; axis < state.planes; ++axis)
+      trees.push_back(
+          std::make_unique<KdTree>(en.reducedAt(axes.first[axis]), axes.count(axis), en.reducedDims()));
 
   LevelStatistics stats;
   stats.volumeSize = N;
   stats.exemplarWidth = ex.width;
-  stats.exemplarHeight = ex.height;
+  stats.exemplarHeight = ex.height / state.planes;
   stats.neighborhood = shape.size;
-  stats.exemplarNeighborhoods = en.count();
+  stats.exemplarNeighborhoods = candidates;
   stats.pcaDims = en.reducedDims();
   stats.pcaKeptVariance = en.pca.keptVariance();
   stats.search = exhaustive ? NeighborhoodSearch::Exhaustive
@@ -231,8 +255,7 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   SliceMatches matches(centres);
   const std::vector<double> theta =
       expectedCounts(double(volume.count()), std::size_t(ex.pixelCount()), pyramid.control[l]);
-  const std::vector<double> phi = expectedCounts(double(matches.grid.count()), std::size_t(en.count()),
-                                                 controlAtCentres(en, pyramid.control[l]));
+  const std::vector<double> phi = expectedMatches(matches.grid, en, axes, pyramid.control[l]);
   std::vector<std::int64_t> positionHistogram;
   if (chenWang) positionHistogram = positionHistogramOf(volume.source, ex.pixelCount());
   const ChannelHistograms exemplarHistogram =
@@ -242,11 +265,14 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
 
   SearchSettings search;
   search.sets = chenWang && !exhaustive ? &sets : nullptr;
-  search.tree = tree.get();
+  for (int axis = 0; axis < 3 && !trees.empty(); ++axis)
+    search.trees[axis] = trees[std::size_t(axis) % trees.size()].get();
+  search.axes = &axes;
   search.exhaustive = exhaustive;
   search.coherenceRadius = o.coherenceRadius;
   search.phi = chenWang ? &phi : nullptr;
-  search.histogramScale = std::max(1.0, o.indexReferenceCount * en.count() / double(matches.grid.count()));
+  search.histogramScale =
+      std::max(1.0, o.indexReferenceCount * candidates / double(matches.grid.perAxis() * 3 / state.planes));
 
   for (int it = 0; it < o.iterations; ++it) {
     checkInterruption();
@@ -278,14 +304,16 @@ LevelStatistics synthesizeLevel(int l, const ExemplarPyramid& pyramid, int neigh
   return stats;
 }
 
-/// The finished sRGB volume as a SolidVolume: linear colours, and the copied exemplar pixel for chen-wang.
-SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, int exemplarWidth) {
+/// The finished sRGB volume as a SolidVolume: linear colours, and the copied exemplar pixel for
+/// chen-wang from one exemplar.
+SolidVolume solidVolumeOf(const WorkVolume& volume, const SynthesisOptions& o, int exemplarWidth,
+                          int planes) {
   SolidVolume out;
   out.dims = {o.size, o.size, o.size};
   out.color.resize(volume.count());
   for (std::size_t i = 0; i < volume.count(); ++i)
     for (int c = 0; c < 3; ++c) out.color[i][c] = srgbToLinear(volume.rgb[3 * i + c]);
-  if (o.method == Method::ChenWang) {
+  if (o.method == Method::ChenWang && planes == 1) {
     out.sourcePosition.resize(volume.count());
     for (std::size_t i = 0; i < volume.count(); ++i)
       out.sourcePosition[i] = {float(volume.source[i] % exemplarWidth),
@@ -309,25 +337,30 @@ std::vector<float> cropValues(const std::vector<float>& values, int fromWidth, i
   return out;
 }
 
+/// Share of the neighbourhoods the axes match that some slice neighbourhood matched at the end.
 double indexCoverage(const PyramidState& state) {
-  std::int64_t used = 0;
-  for (std::int64_t h : state.indexHistogram) used += h > 0;
-  return double(used) / double(state.indexHistogram.size());
+  std::int64_t used = 0, all = 0;
+  for (int axis = 0; axis < state.planes; ++axis) {
+    for (int m = state.axes.first[axis]; m < state.axes.end[axis]; ++m)
+      used += state.indexHistogram[std::size_t(m)] > 0;
+    all += state.axes.count(axis);
+  }
+  return double(used) / double(all);
 }
 
-}  // namespace
-
-SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& o) {
+/// Synthesises from `finest` (planes = 1), or from the tall image of three planes' exemplars of
+/// equal size, each of a height that every level halves exactly (planes = 3).
+SynthesisResult synthesize(RgbImage finest, int planes, const SynthesisOptions& o,
+                           std::vector<int> neighborhoods) {
   const auto start = Clock::now();
   SynthesisResult result;
   SynthesisStatistics& stats = result.statistics;
-  stats.neighborhoods = validate(exemplarSrgb, o);
+  stats.neighborhoods = std::move(neighborhoods);
   const ThreadLimit threadLimit(o.threads);
 
   // Skeletal synthesis optimises the coarser levels only and rebuilds the finer ones from the
   // exemplar's Haar details.
   const int rebuilt = o.method == Method::Skeletal ? o.waveletLevels : 0;
-  RgbImage finest = toRgbImage(exemplarSrgb);
   std::vector<float> control = o.control ? toControlValues(*o.control) : std::vector<float>{};
   std::optional<HaarPyramid> haar;
   if (rebuilt > 0) {
@@ -343,6 +376,7 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
   pyramid.control.resize(std::size_t(optimised.levels));
   stats.neighborhoods.resize(std::size_t(optimised.levels));
   PyramidState state;
+  state.planes = planes;
   for (int l = 0; l < optimised.levels; ++l)
     stats.levels.push_back(synthesizeLevel(l, pyramid, stats.neighborhoods[l], optimised, state));
   if (o.method != Method::Kopf) stats.indexCoverage = indexCoverage(state);
@@ -353,9 +387,47 @@ SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOpti
     state.volume = rebuildSkeletalSolid(state.volume, *haar);
     stats.rebuildSeconds = secondsSince(rebuildStart);
   }
-  result.volume = solidVolumeOf(state.volume, o, pyramid.levels.back().width);
+  result.volume = solidVolumeOf(state.volume, o, pyramid.levels.back().width, planes);
   stats.seconds = secondsSince(start);
   return result;
+}
+
+/// The three exemplars one above the other, each cut to the rows every level halves exactly.
+RgbImage stackPlanes(const std::array<cv::Mat, 3>& exemplarByAxis, int halvings) {
+  RgbImage tall;
+  for (const cv::Mat& exemplar : exemplarByAxis) {
+    const RgbImage plane = toRgbImage(exemplar.rowRange(0, exemplar.rows >> halvings << halvings));
+    tall.width = plane.width;
+    tall.height += plane.height;
+    tall.data.insert(tall.data.end(), plane.data.begin(), plane.data.end());
+  }
+  return tall;
+}
+
+}  // namespace
+
+SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& o) {
+  std::vector<int> neighborhoods = validate(exemplarSrgb, o);
+  return synthesize(toRgbImage(exemplarSrgb), 1, o, std::move(neighborhoods));
+}
+
+SynthesisResult synthesizeSolid(const std::array<cv::Mat, 3>& exemplarByAxis, const SynthesisOptions& o) {
+  std::vector<int> neighborhoods;
+  for (const cv::Mat& exemplar : exemplarByAxis) neighborhoods = validate(exemplar, o);
+  const cv::Mat& xy = exemplarByAxis[2];
+  bool same = true;
+  for (const cv::Mat& exemplar : exemplarByAxis) {
+    if (exemplar.size() != xy.size())
+      throw InputError("the plane exemplars differ in size (" +
+                       sizeText(exemplarByAxis[0].cols, exemplarByAxis[0].rows) + ", " +
+                       sizeText(exemplarByAxis[1].cols, exemplarByAxis[1].rows) + ", " +
+                       sizeText(xy.cols, xy.rows) + "): give them one size");
+    same = same && exemplar.type() == xy.type() && cv::norm(exemplar, xy, cv::NORM_INF) == 0;
+  }
+  if (same) return synthesizeSolid(xy, o);
+  if (o.control) throw OptionError("a control map needs one exemplar: give no plane exemplars with it");
+  const int halvings = o.levels - 1 + (o.method == Method::Skeletal ? o.waveletLevels : 0);
+  return synthesize(stackPlanes(exemplarByAxis, halvings), 3, o, std::move(neighborhoods));
 }
 
 }  // namespace solidtex

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,5 +65,15 @@ struct SynthesisResult {
 /// Throws InputError with one line for bad input: an exemplar smaller than a level's neighbourhood,
 /// a size the levels cannot reach, a control map of the wrong size, invalid counts.
 SynthesisResult synthesizeSolid(const cv::Mat& exemplarSrgb, const SynthesisOptions& options);
+
+/// Synthesises a material that differs by direction from one exemplar per plane (Kopf et al.'s and
+/// Chen and Wang's three-exemplar form): exemplarByAxis[a] for the slices orthogonal to axis a, so
+/// [0] the yz plane (y across, z down), [1] the xz plane (x across, z down), [2] the xy plane (x
+/// across, y down). The three must be of one size; each is cut to the rows every level halves
+/// exactly. Three equal exemplars give synthesizeSolid(exemplarByAxis[2], options)'s volume. The
+/// volume records no source positions (they would point into three images). Throws InputError as
+/// the one-exemplar form, and for exemplars of different sizes or a control map.
+SynthesisResult synthesizeSolid(const std::array<cv::Mat, 3>& exemplarByAxis,
+                                const SynthesisOptions& options);
 
 }  // namespace solidtex

@@ -27,6 +27,7 @@ void checkOptions(const cv::Mat& exemplar, const cv::Mat& reference, const Conti
       o.scales.empty() || !std::all_of(o.scales.begin(), o.scales.end(), positive) || o.patches <= 0 ||
       o.queries <= 0 || o.directions <= 0 || o.histogramBins <= 0)
     throw InputError("patch sides, scales and counts must be positive");
+  if (o.planeAxis < -1 || o.planeAxis > 2) throw InputError("the plane's axis must be 0, 1, 2 or -1 for all");
 }
 
 // Where compared patches come from: a solid's axis or oblique slices, an image.
@@ -40,13 +41,14 @@ PatchSource imageSource(const cv::Mat& image) {
           [&image](PatchGeometry g, int n, std::uint64_t seed) { return imagePatches(image, g, n, seed); }};
 }
 
-PatchSource sliceSource(const SrgbVolume& volume, bool oblique) {
+PatchSource sliceSource(const SrgbVolume& volume, bool oblique, int planeAxis) {
   return {[&volume, oblique](PatchGeometry g) {
             const bool fits = oblique ? obliquePatchesFit(volume.dims, g) : axisPatchesFit(volume.dims, g);
             return fits ? std::int64_t(std::numeric_limits<int>::max()) : std::int64_t(0);
           },
-          [&volume, oblique](PatchGeometry g, int n, std::uint64_t seed) {
-            return oblique ? obliqueSlicePatches(volume, g, n, seed) : axisSlicePatches(volume, g, n, seed);
+          [&volume, oblique, planeAxis](PatchGeometry g, int n, std::uint64_t seed) {
+            return oblique ? obliqueSlicePatches(volume, g, n, seed)
+                           : axisSlicePatches(volume, g, n, seed, planeAxis);
           }};
 }
 
@@ -130,7 +132,7 @@ ContinuousQuality measureContinuousSolid(const SolidVolume& solid, const cv::Mat
     throw InputError("the solid has no color grid covering its box");
   const cv::Mat exemplar = exemplarImage.clone(), reference = referenceImage.clone();  // continuous
   const SrgbVolume volume = srgbVolumeOf(solid);
-  std::vector<PatchSource> sources{sliceSource(volume, false), sliceSource(volume, true)};
+  std::vector<PatchSource> sources{sliceSource(volume, false, o.planeAxis), sliceSource(volume, true, -1)};
   if (!reference.empty()) sources.push_back(imageSource(reference));
   const std::vector<PatchSimilarity> similarity = comparePatchSources(sources, exemplar, o);
   ContinuousQuality q;

@@ -22,6 +22,9 @@ struct ContinuousQualityOptions {
   int directions = 64;         ///< random projections of the sliced Wasserstein distance
   int histogramBins = 8;       ///< per channel, joint colour histograms
   std::uint64_t seed = 12345;  ///< where the patches lie
+  /// Axis slices orthogonal to this axis only (0: yz, 1: xz, 2: xy), for a material that differs by
+  /// direction, each plane against its own photo; -1: all three. Oblique planes take every orientation.
+  int planeAxis = -1;
 };
 
 /// The patch distribution distance at one patch side and scale.

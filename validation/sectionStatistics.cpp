@@ -160,6 +160,11 @@ int planeAxisOf(const std::string& plane) {
   throw OptionError("unknown plane '" + plane + "': use xy, xz or yz");
 }
 
+std::string planeNameOf(int axis) {
+  constexpr const char* names[3] = {"yz", "xz", "xy"};
+  return names[axis];
+}
+
 SectionStatistics sampleSections(const Dims& dims, const std::vector<std::int32_t>& ids,
                                  const SectionOptions& options) {
   const std::vector<SlicePlane> planes = planesFor(dims, options);

@@ -30,6 +30,8 @@ struct SectionOptions {
 /// The axis a plane named "xy", "xz" or "yz" holds fixed (2, 1, 0), as SectionOptions::planeAxis
 /// takes it; throws OptionError otherwise.
 int planeAxisOf(const std::string& plane);
+/// The plane an axis holds fixed: "yz", "xz" or "xy" for 0, 1, 2.
+std::string planeNameOf(int axis);
 
 /// Cross-sections of the particles of an id volume (0 = background) on many planes. Sizes and
 /// positions are in samples (`SectionOptions::step` voxels apart).

@@ -99,7 +99,8 @@ Eigen::MatrixXf imagePatches(const cv::Mat& srgb, PatchGeometry g, int count, st
   return patches;
 }
 
-Eigen::MatrixXf axisSlicePatches(const SrgbVolume& v, PatchGeometry g, int count, std::uint64_t seed) {
+Eigen::MatrixXf axisSlicePatches(const SrgbVolume& v, PatchGeometry g, int count, std::uint64_t seed,
+                                 int onlyAxis) {
   struct Origin {
     int axis, x, y, z;
   };
@@ -107,7 +108,7 @@ Eigen::MatrixXf axisSlicePatches(const SrgbVolume& v, PatchGeometry g, int count
   Rng rng(seed);
   std::vector<Origin> origins(static_cast<std::size_t>(count));
   for (int p = 0; p < count; ++p) {
-    const int axis = p % 3;
+    const int axis = onlyAxis >= 0 ? onlyAxis : p % 3;
     int corner[3];
     for (int a = 0; a < 3; ++a)
       corner[a] = int(uniformIndex(rng, std::uint64_t(a == axis ? extent[a] : extent[a] - g.span() + 1)));

@@ -39,9 +39,11 @@ bool obliquePatchesFit(const Dims& dims, PatchGeometry geometry);
 /// columns of a geometry.dims() x count matrix; every position when count >= patchPositions.
 Eigen::MatrixXf imagePatches(const cv::Mat& srgb, PatchGeometry geometry, int count, std::uint64_t seed);
 
-/// `count` patches of slices orthogonal to x, y and z in turn, at random positions inside the volume.
+/// `count` patches of slices orthogonal to x, y and z in turn (or to `onlyAxis` alone when it is
+/// 0, 1 or 2), at random positions inside the volume; x slices with y across and z down, y slices x
+/// across and z down, z slices x across and y down.
 Eigen::MatrixXf axisSlicePatches(const SrgbVolume& volume, PatchGeometry geometry, int count,
-                                 std::uint64_t seed);
+                                 std::uint64_t seed, int onlyAxis = -1);
 
 /// `count` patches of randomly rotated planes through random points, wholly inside the volume,
 /// sampled trilinearly.

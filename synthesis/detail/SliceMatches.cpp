@@ -47,9 +47,11 @@ inline float boundedSquaredDistance(const float* a, const float* b, int d, float
 /// `radius`, the similarity set of the exemplar neighbourhood that u's source pixel implies,
 /// shifted back by u's offset. Each set is taken once: in coherent regions all neighbours imply
 /// the same set. (Ids may still repeat across different sets; considering one twice is harmless.)
-void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& ex,
+void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& ex, const AxisExemplars& axes,
                          const SimilaritySets& sets, int axis, const std::array<int, 3>& c, int radius,
                          std::vector<std::int32_t>& out) {
+  // A neighbour may copy another plane's pixel: its row in this axis's plane stands in for it.
+  const int top = ex.centreY(axes.first[axis]), bottom = ex.centreY(axes.end[axis] - 1);
   out.clear();
   const SliceAxes sa = sliceAxes(axis);
   std::array<int, 3> u = c;
@@ -58,8 +60,8 @@ void coherenceCandidates(const WorkVolume& volume, const ExemplarNeighborhoods& 
     for (int di = -radius; di <= radius; ++di) {
       u[sa.u] = volume.wrap(c[sa.u] + di);
       const std::int32_t p = volume.source[volume.index(u[0], u[1], u[2])];
-      const int px = p % ex.exemplarWidth, py = p / ex.exemplarWidth;
-      const std::int32_t set = ex.clampedIndexOf(px - di, py - dj);
+      const int px = p % ex.exemplarWidth, py = axes.rowIn(axis, p / ex.exemplarWidth);
+      const std::int32_t set = ex.clampedIndexOf(px - di, std::clamp(py - dj, top, bottom));
       if (std::find(out.begin(), out.end(), set) == out.end()) out.push_back(set);
     }
   }
@@ -125,10 +127,11 @@ struct SortedByFirstCoefficient {
   std::vector<float> key;           ///< first coefficient, increasing
   std::vector<float> coefficients;  ///< in sorted order, d per neighbourhood
 
-  explicit SortedByFirstCoefficient(const ExemplarNeighborhoods& ex) {
-    const int M = ex.count(), d = ex.reducedDims();
+  /// Of neighbourhoods [first, end).
+  SortedByFirstCoefficient(const ExemplarNeighborhoods& ex, int first, int end) {
+    const int M = end - first, d = ex.reducedDims();
     id.resize(M);
-    for (int m = 0; m < M; ++m) id[m] = m;
+    for (int m = 0; m < M; ++m) id[m] = first + m;
     std::stable_sort(id.begin(), id.end(),
                      [&](std::int32_t a, std::int32_t b) { return ex.reducedAt(a)[0] < ex.reducedAt(b)[0]; });
     key.resize(M);
@@ -184,10 +187,12 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
   const bool useSets = settings.sets && !settings.exhaustive && !volume.source.empty();
   const int batches = settings.phi ? std::max(1, settings.batches) : 1;
   std::vector<std::int32_t> previous = matches.match;
+  const AxisExemplars axes = settings.axes ? *settings.axes : axisExemplarsOf(ex, 0);
   // Exhaustive levels are small (a few thousand neighbourhoods): sorting costs next to nothing.
-  std::unique_ptr<SortedByFirstCoefficient> sorted;
-  if (settings.exhaustive || (!useSets && !settings.tree))
-    sorted = std::make_unique<SortedByFirstCoefficient>(ex);
+  std::array<std::unique_ptr<SortedByFirstCoefficient>, 3> sorted;
+  for (int axis = 0; axis < 3; ++axis)
+    if (settings.exhaustive || (!useSets && !settings.trees[axis]))
+      sorted[axis] = std::make_unique<SortedByFirstCoefficient>(ex, axes.first[axis], axes.end[axis]);
 
   for (int b = 0; b < batches; ++b) {
     const std::size_t inBatch = count > std::size_t(b) ? (count - b + batches - 1) / batches : 0;
@@ -207,14 +212,14 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
 
                           BestCandidate best(y, d, settings, floor, indexHistogram, previous[id]);
                           if (previous[id] >= 0) best.consider(previous[id], ex.reducedAt(previous[id]));
-                          if (sorted) {
-                            considerAll(*sorted, d, y, best);
+                          if (sorted[axis]) {
+                            considerAll(*sorted[axis], d, y, best);
                           } else if (useSets) {
-                            coherenceCandidates(volume, ex, *settings.sets, axis, c, settings.coherenceRadius,
-                                                s.candidates);
+                            coherenceCandidates(volume, ex, axes, *settings.sets, axis, c,
+                                                settings.coherenceRadius, s.candidates);
                             for (std::int32_t m : s.candidates) best.consider(m, ex.reducedAt(m));
                           } else {
-                            const int m = settings.tree->nearest(y);
+                            const int m = axes.first[axis] + settings.trees[axis]->nearest(y);
                             best.consider(m, ex.reducedAt(m));
                           }
                           matches.match[id] = best.best();

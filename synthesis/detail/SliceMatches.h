@@ -1,7 +1,9 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "synthesis/detail/AxisExemplars.h"
 #include "synthesis/detail/ExemplarNeighborhoods.h"
 #include "synthesis/detail/KdTree.h"
 #include "synthesis/detail/SimilaritySets.h"
@@ -24,9 +26,12 @@ struct SliceMatches {
 /// How the search phase finds each slice neighbourhood's nearest exemplar neighbourhood.
 struct SearchSettings {
   const SimilaritySets* sets = nullptr;  ///< k-coherence search over the candidate set (needs volume.source)
-  const KdTree* tree = nullptr;  ///< kd-tree over the PCA coefficients (when no sets / not exhaustive)
-  bool exhaustive = false;       ///< every exemplar neighbourhood is a candidate
-  int coherenceRadius = 1;       ///< k-coherence: neighbours within this slice radius give candidates
+  /// Per axis, a kd-tree over the PCA coefficients of the neighbourhoods that axis matches, its
+  /// ids counted from axes->first (when no sets / not exhaustive)
+  std::array<const KdTree*, 3> trees{};
+  const AxisExemplars* axes = nullptr;  ///< which neighbourhoods each axis matches; null: all
+  bool exhaustive = false;              ///< every exemplar neighbourhood is a candidate
+  int coherenceRadius = 1;              ///< k-coherence: neighbours within this slice radius give candidates
   const std::vector<double>* phi =
       nullptr;                  ///< index-histogram matching (eq. 5-6) against these expected counts
   double histogramScale = 1.0;  ///< H and phi are multiplied by this before eq. 6 (1 = plain counts)

@@ -115,6 +115,8 @@ TEST_F(BadInput, BrokenPhotosAreRefusedByEveryCommandThatReadsOne) {
   for (const char* photo : {"empty.png", "truncated.png", "idat.png", "huge.png"}) {
     const std::string in = std::string("IN/") + photo;
     expectRefused("synthesize " + in + " --size 16 -o OUT/v.vdb --report OUT/r.json", 1);
+    expectRefused("synthesize IN/white.png --photo-xz " + in + " --size 16 -o OUT/v.vdb --report OUT/r.json",
+                  1);
     expectRefused("synthesize2d " + in + " --size 16 16 -o OUT/t.png", 1);
     expectRefused("analyze IN/coins.png --mask " + in, 1);
   }
@@ -219,7 +221,9 @@ TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
       {"synthesize IN/ct.vdb -o OUT/a.vdb --size 32 --region 0 0 0 40 40 40", "--region"},
       {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --region 5 5 5 5 5 5", "--region"},
       {"synthesize IN/ct.vdb -o OUT/a.vdb --size 30 --periodic", "--periodic"},
-      {"synthesize2d IN/coins.png -o OUT/a.png --threads -1", "--threads"}};
+      {"synthesize2d IN/coins.png -o OUT/a.png --threads -1", "--threads"},
+      {"synthesize IN/ct.vdb -o OUT/a.vdb --size 16 --photo-xz IN/coins.png", "--photo-xz"},
+      {"synthesize IN/coins.png -o OUT/a.vdb --size 512 --photo-yz IN/coins.png", "--photo-xz"}};
   for (const auto& [arguments, option] : cases) {
     const std::string line = expectRefused(arguments, 2);
     EXPECT_NE(line.find(option), std::string::npos) << arguments << ": " << line;
@@ -237,6 +241,12 @@ TEST_F(BadInput, ADeletedCurrentFolderIsSaidInOneLine) {
   ASSERT_EQ(outcome.errLines.size(), 1u);
   EXPECT_NE(outcome.errLines[0].find("the current folder no longer exists"), std::string::npos)
       << outcome.errLines[0];
+}
+
+TEST_F(BadInput, PlaneExemplarsOfDifferentSizesAreRefused) {
+  const std::string line = expectRefused(
+      "synthesize IN/white.png --photo-xz IN/coins.png --size 32 -o OUT/v.vdb --report OUT/r.json", 1);
+  EXPECT_NE(line.find("differ in size"), std::string::npos) << line;
 }
 
 TEST_F(BadInput, SizesBeyondMemoryAreRefusedUpFront) {

@@ -61,6 +61,35 @@ TEST(Reports, SynthesizeReportIsSnakeCaseWithLevelsAndMemory) {
   fs::remove(job.output);
 }
 
+TEST(Reports, PlaneExemplarsRateEachPlaneAndCompareRatesOnePlane) {
+  const std::string planes = std::string(SOLIDTEX_DATA_DIR) + "/continuous/planes/";
+  SynthesizeJob job;
+  job.exemplar = planes + "wood_xy.png";
+  job.photoXz = planes + "wood_xz.png";
+  job.photoYz = planes + "wood_yz.png";
+  job.output = scratch("planes.vdb").string();
+  job.synthesis.size = 16;
+  job.synthesis.levels = 2;
+  job.synthesis.neighborhoods = {4};
+  job.synthesis.iterations = 1;
+  job.progress = false;
+  const nlohmann::json report = runSynthesize(job);
+  EXPECT_EQ(otherKeys(report), std::vector<std::string>{});
+  EXPECT_FALSE(report.contains("quality"));  // one exemplar does not speak for every axis
+  for (const char* plane : {"yz", "xz", "xy"})
+    EXPECT_EQ(report["planes"][plane]["exemplar"], std::string("wood_") + plane + ".png");
+  CompareJob compare;
+  compare.photo = *job.photoXz;
+  compare.volume = job.output;
+  compare.sections.planeAxis = 1;
+  const nlohmann::json compared = runCompare(compare);
+  EXPECT_EQ(compared["mode"], "continuous");
+  EXPECT_EQ(compared["plane"], "xz");
+  EXPECT_NEAR(compared["quality"]["axis"]["completeness"].get<double>(),
+              report["planes"]["xz"]["quality"]["axis"]["completeness"].get<double>(), 1e-9);
+  fs::remove(job.output);
+}
+
 TEST(Reports, ParticlesAndCompareReportsAreSnakeCase) {
   ParticleSolidJob job;
   job.photo = std::string(SOLIDTEX_DATA_DIR) + "/particles/smarties.png";

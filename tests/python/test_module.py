@@ -200,6 +200,24 @@ class SynthesizeTest(unittest.TestCase):
         self.assertEqual(comparison["mode"], "continuous")
         self.assertEqual(comparison["dims"], [32, 32, 32])
 
+    def test_plane_exemplars_give_the_command_lines_bytes_and_each_planes_quality(self):
+        planes = os.path.join(os.environ["SOLIDTEX_DATA_DIR"], "continuous", "planes")
+        xy, xz, yz = (os.path.join(planes, f"bedded_{p}.png") for p in ("xy", "xz", "yz"))
+        with tempfile.TemporaryDirectory() as folder:
+            npy = os.path.join(folder, "npy")
+            run = cli("synthesize", xy, "--photo-xz", xz, "--photo-yz", yz, "-o", os.path.join(folder, "s.vdb"),
+                      "--size", "32", "--no-quality", "--npy", npy, "--quiet")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            made = solidtex.synthesize(xy, photo_xz=xz, photo_yz=yz, size=32)
+            self.assertEqual(np.load(os.path.join(npy, "color.npy")).tobytes(), made["color"].tobytes())
+        report = made["report"]
+        self.assertNotIn("quality", report)
+        self.assertEqual([report["planes"][p]["exemplar"] for p in ("yz", "xz", "xy")],
+                         ["bedded_yz.png", "bedded_xz.png", "bedded_xy.png"])
+        self.assertGreater(report["planes"]["xz"]["quality"]["axis"]["completeness"], 0)
+        with self.assertRaisesRegex(solidtex.Error, "differ in size"):
+            solidtex.synthesize(xy, photo_xz=COINS, size=32)
+
     def test_a_grown_photo_solid_gives_the_command_lines_bytes(self):
         photo = np.asarray(Image.open(COINS).convert("RGB"))[:48, :48].copy()
         growth = ["--grow-from", "32", "--dims", "40", "20", "18"]
