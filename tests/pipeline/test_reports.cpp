@@ -73,6 +73,7 @@ TEST(Reports, PlaneExemplarsRateEachPlaneAndCompareRatesOnePlane) {
   job.synthesis.neighborhoods = {4};
   job.synthesis.iterations = 1;
   job.progress = false;
+  job.quality.patches = 1024;
   const nlohmann::json report = runSynthesize(job);
   EXPECT_EQ(otherKeys(report), std::vector<std::string>{});
   EXPECT_FALSE(report.contains("quality"));  // one exemplar does not speak for every axis
@@ -82,6 +83,7 @@ TEST(Reports, PlaneExemplarsRateEachPlaneAndCompareRatesOnePlane) {
   compare.photo = *job.photoXz;
   compare.volume = job.output;
   compare.sections.planeAxis = 1;
+  compare.quality = job.quality;
   const nlohmann::json compared = runCompare(compare);
   EXPECT_EQ(compared["mode"], "continuous");
   EXPECT_EQ(compared["plane"], "xz");

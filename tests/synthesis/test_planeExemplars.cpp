@@ -60,8 +60,8 @@ double meanStep(const SolidVolume& v, int along) {
 ContinuousQualityOptions fewPatches(int planeAxis) {
   ContinuousQualityOptions q;
   q.planeAxis = planeAxis;
-  q.patches = 2048;
-  q.queries = 512;
+  q.patches = 1024;
+  q.queries = 256;
   return q;
 }
 
@@ -105,14 +105,16 @@ TEST(PlaneExemplars, BedsLieAcrossZWithEachMethod) {
           << "axis " << axis << ": " << own << " " << wrong << " " << photoWrong;
       const SolidVolume alone = synthesizeSolid(planes[axis], planeOptions(m)).volume;
       EXPECT_LT(own, 1.25 * planeSimilarity(alone, planes[axis], -1)) << "axis " << axis;
+      if (axis == 2) {
+        EXPECT_LT(meanStep(alone, 2), 1.25 * meanStep(alone, 0));
+      }
     }
-    const SolidVolume isotropic = synthesizeSolid(planes[2], planeOptions(m)).volume;
-    EXPECT_LT(meanStep(isotropic, 2), 1.25 * meanStep(isotropic, 0));
   }
 }
 
 TEST(PlaneExemplars, SameSeedSameOutputWithOneAndTwoThreads) {
-  const std::array<cv::Mat, 3> planes = beddedPlanes();
+  std::array<cv::Mat, 3> planes = beddedPlanes();
+  for (cv::Mat& plane : planes) plane = plane(cv::Rect(0, 0, 48, 48)).clone();
   for (Method m : {Method::ChenWang, Method::Kopf}) {
     SynthesisOptions o = planeOptions(m);
     o.size = 16;
