@@ -44,6 +44,6 @@ build-tsan/tests/placement/test_placement --gtest_brief=1 --gtest_filter="-$plac
 # Synthesis: its tests at small sizes (the thread-count checks of every method, with and without a
 # frame field, among them); the quality checks at larger sizes take minutes each under the
 # sanitizer and are left to the other builds.
-slow=SynthesizeFromVolume.RegionEquals*:*CircleField*:*LayersFollow*:*RepeatedTile*:*RealExemplar*
+slow=PeriodicAndSteered/RegionOfTheWholeVolume.*:*CircleField*:*LayersFollow*:*RepeatedTile*:*RealExemplar*
 slow+=:*ProbingEveryCell*:*BedsLieAcrossZ*:*PeriodicVolumeHasNoSeam*:GrowSolid.IsTheSeedSolidGrown*
 build-tsan/tests/synthesis/test_synthesis --gtest_brief=1 --gtest_filter="-$slow"
