@@ -189,10 +189,12 @@ double searchPhase(const WorkVolume& volume, const ExemplarNeighborhoods& ex, co
   std::vector<std::int32_t> previous = matches.match;
   const AxisExemplars axes = settings.axes ? *settings.axes : axisExemplarsOf(ex, 0);
   // Exhaustive levels are small (a few thousand neighbourhoods): sorting costs next to nothing.
-  std::array<std::unique_ptr<SortedByFirstCoefficient>, 3> sorted;
+  std::array<std::shared_ptr<const SortedByFirstCoefficient>, 3> sorted;
   for (int axis = 0; axis < 3; ++axis)
     if (settings.exhaustive || (!useSets && !settings.trees[axis]))
-      sorted[axis] = std::make_unique<SortedByFirstCoefficient>(ex, axes.first[axis], axes.end[axis]);
+      sorted[axis] = axis > 0 && axes.first[axis] == axes.first[0] && sorted[0]
+                         ? sorted[0]  // one exemplar for every axis: one list
+                         : std::make_shared<SortedByFirstCoefficient>(ex, axes.first[axis], axes.end[axis]);
 
   for (int b = 0; b < batches; ++b) {
     const std::size_t inBatch = count > std::size_t(b) ? (count - b + batches - 1) / batches : 0;
