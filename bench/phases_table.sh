@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Truths of two and three kinds of particle (`truth`: small orange, large blue, with --medium-share a
-# green class between), each solid made with `particles --phases auto`: the phases found, and per
+# green class between, or an orange one told apart by its grain alone), each solid made with `particles --phases auto`: the phases found, and per
 # phase the photo's area fraction, the truth's volume fraction of that class, the solid's volume
 # fraction, and the section-area KS against the photo's particles of the phase (`compare`) with its
 # 5 % critical value.
@@ -20,8 +20,10 @@ truths=(
   "three classes|1|--medium-share 0.3 --medium-radius 7.5"
   "three classes|2|--medium-share 0.3 --medium-radius 7.5"
   "three classes, polytopes|3|--medium-share 0.3 --medium-radius 7.5 --shape polytope"
+  "grainy orange|4|--medium-share 0.3 --medium-radius 7.5 --medium-srgb 0.92 0.55 0.16 --medium-grain 0.1"
+  "grainy orange, same size|5|--medium-share 0.4 --medium-radius 5 --medium-srgb 0.92 0.55 0.16 --medium-grain 0.08"
 )
-echo "| truth | seed | phases found | phase (L* a* b*) | photo area fraction | truth volume fraction | solid volume fraction | section KS (critical) |"
+echo "| truth | seed | phases found | phase (L* a* b*, grain) | photo area fraction | truth volume fraction | solid volume fraction | section KS (critical) |"
 echo "|---|---|---|---|---|---|---|---|"
 for entry in "${truths[@]}"; do
   IFS='|' read -r name seed options <<<"$entry"
@@ -37,7 +39,8 @@ d, name, seed = sys.argv[1:]
 truth = json.load(open(f"{d}/truth.json"))
 compare = json.load(open(f"{d}/compare.json"))
 solid = json.load(open(f"{d}/solid.json"))
-# Each phase is matched to the truth class of the nearest colour (b* tells orange from blue, a* green).
+# Each phase is matched to the truth class of the nearest colour (b* tells orange from blue, a* green);
+# classes of one colour are told apart by their grain, in the order of the phases' grain.
 def lab_of(rgb):
     import colorsys
     def lin(c): return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
@@ -51,10 +54,21 @@ classes = truth["options"]["classes"]
 class_lab = [lab_of(c["srgb"]) for c in classes]
 phases = compare.get("phases", [])
 found = len(phases)
+solid_classes = solid["phases"]["classes"]
+def colour_distance(lab, i): return sum((a - b) ** 2 for a, b in zip(lab, class_lab[i])) ** 0.5
+def same_colour(lab):
+    best = min(colour_distance(lab, i) for i in range(len(classes)))
+    return [i for i in range(len(classes)) if colour_distance(lab, i) < best + 3]
+def match(p):
+    group = same_colour(solid_classes[p["phase"] - 1]["lab"])
+    mates = sorted((q for q in phases if same_colour(solid_classes[q["phase"] - 1]["lab"]) == group),
+                   key=lambda q: solid_classes[q["phase"] - 1]["grain"])
+    by_grain = sorted(group, key=lambda i: classes[i].get("grain", 0))
+    return by_grain[min(mates.index(p), len(by_grain) - 1)]
 for p in phases:
-    lab = solid["phases"]["classes"][p["phase"] - 1]["lab"]
-    k = min(range(len(classes)), key=lambda i: sum((a - b) ** 2 for a, b in zip(lab, class_lab[i])))
-    print(f"| {name} | {seed} | {found} of {len(classes)} | {lab[0]:.0f} {lab[1]:.0f} {lab[2]:.0f} | "
+    lab, grain = solid_classes[p["phase"] - 1]["lab"], solid_classes[p["phase"] - 1]["grain"]
+    k = match(p)
+    print(f"| {name} | {seed} | {found} of {len(classes)} | {lab[0]:.0f} {lab[1]:.0f} {lab[2]:.0f}, {grain:.1f} | "
           f"{p['area_fraction']:.3f} | {truth['volume_fraction_per_class'][k]:.3f} | {p['volume_fraction']:.3f} | "
           f"{p.get('ks', 1):.3f} ({p.get('ks_critical_95', 0):.3f}) |")
 PY

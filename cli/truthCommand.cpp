@@ -47,6 +47,19 @@ Action addTruthCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--medium-radius", medium->meanRadius, "Median radius of the medium class, voxels")
       ->capture_default_str();
+  auto mediumSrgb = std::make_shared<std::vector<float>>();
+  command
+      ->add_option("--medium-srgb", *mediumSrgb,
+                   "Colour of the medium class, sRGB in [0, 1] (default green; the small class's 0.92 0.55 "
+                   "0.16 with --medium-grain makes a class told apart by its grain alone)")
+      ->expected(3)
+      ->check(between(0, 1));
+  command
+      ->add_option("--medium-grain", medium->grain,
+                   "Speckle of the medium class: each pixel's lightness varies by this standard deviation "
+                   "(0 = plain)")
+      ->check(between(0, 1))
+      ->capture_default_str();
   auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
   command->add_option("--spread", *spread, "Standard deviation of log radius (both classes, 0-1)")
       ->check(between(0, 1))
@@ -71,11 +84,12 @@ Action addTruthCommand(CLI::App& app) {
   command->add_option("--noise", t.noise, "Pixel noise of the photo (sRGB standard deviation)")
       ->capture_default_str();
   command->add_option("--seed", t.seed, "Random seed: same seed, same truth")->capture_default_str();
-  return [job, dims, spread, shape, medium] {
+  return [job, dims, spread, shape, medium, mediumSrgb] {
     ParticleTruthOptions& t = job->truth;
     t.shape = parseTruthShape(*shape);
     t.dims = {(*dims)[0], (*dims)[1], (*dims)[2]};
     t.classes[0].radiusSpread = t.classes[1].radiusSpread = medium->radiusSpread = *spread;
+    if (!mediumSrgb->empty()) medium->srgb = {(*mediumSrgb)[0], (*mediumSrgb)[1], (*mediumSrgb)[2]};
     // Shares that add up to 1 in decimals leave the small class a rounding error, not a share.
     constexpr double kRounding = 1e-9;
     t.classes[0].share = 1 - t.classes[1].share - medium->share;

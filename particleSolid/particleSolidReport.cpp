@@ -104,9 +104,11 @@ nlohmann::json phasesJson(const ParticleSolid& solid) {
   const double all = double(solid.placement.counted.dims().count());
   nlohmann::json classes = nlohmann::json::array();
   const nlohmann::json centres = phaseColoursJson(stats.phaseCentres);
+  const nlohmann::json grain = phaseGrainJson(stats.phaseCentres);
   for (std::size_t k = 0; k < std::size_t(phases); ++k)
     classes.push_back({{"phase", k + 1},
                        {"lab", centres[k]},
+                       {"grain", grain.is_null() ? nullptr : grain[k]},
                        {"photo_particles", photoParticles[k]},
                        {"area_fraction", photoFractions[k]},
                        {"particles", placed[k]},
@@ -144,8 +146,11 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
     metadata["exemplar_xz"] = std::filesystem::path(solid.planeStats[0].name).filename().string();
     metadata["exemplar_yz"] = std::filesystem::path(solid.planeStats[1].name).filename().string();
   }
-  if (solid.stats.phaseCentres.rows > 1)
+  if (solid.stats.phaseCentres.rows > 1) {
     metadata["phase_lab"] = phaseColoursJson(solid.stats.phaseCentres).dump();
+    if (solid.stats.phaseCentres.cols > 3)
+      metadata["phase_grain"] = phaseGrainJson(solid.stats.phaseCentres).dump();
+  }
   const SizingUncertainty& u = solid.sizing.uncertainty;
   if (!u.bandVolumes.empty())
     metadata["particle_volume_cdf_band"] =

@@ -8,7 +8,8 @@
 namespace solidtex {
 namespace {
 
-cv::Mat phaseColours(const SolidVolume& volume, const std::string& volumePath) {
+// The solid's phase centres: colours, and grain where the solid was made with it.
+cv::Mat phaseCentres(const SolidVolume& volume, const std::string& volumePath) {
   const auto text = volume.metadata.find("phase_lab");
   const nlohmann::json lab =
       text == volume.metadata.end() ? nlohmann::json() : nlohmann::json::parse(text->second, nullptr, false);
@@ -26,6 +27,18 @@ cv::Mat phaseColours(const SolidVolume& volume, const std::string& volumePath) {
       centres.at<float>(r, c) = v.get<float>();
     }
   }
+  const auto grainText = volume.metadata.find("phase_grain");
+  if (grainText == volume.metadata.end()) return centres;
+  const nlohmann::json grain = nlohmann::json::parse(grainText->second, nullptr, false);
+  if (!grain.is_array() || grain.size() != lab.size())
+    throw InputError(volumePath + ": its phase grain (phase_grain) is damaged");
+  cv::Mat grainColumn(centres.rows, 1, CV_32F);
+  for (int r = 0; r < centres.rows; ++r) {
+    if (!grain[std::size_t(r)].is_number())
+      throw InputError(volumePath + ": its phase grain (phase_grain) is damaged");
+    grainColumn.at<float>(r) = grain[std::size_t(r)].get<float>();
+  }
+  cv::hconcat(centres, grainColumn, centres);
   return centres;
 }
 
@@ -36,7 +49,7 @@ nlohmann::json phaseComparison(const ExemplarStats& photoStats, const SolidVolum
                                double diameter) {
   if (volume.particlePhase.empty()) return nullptr;
   ExemplarStats stats = photoStats;
-  assignPhases(stats, nearestPhases(stats, phaseColours(volume, volumePath)));
+  assignPhases(stats, nearestPhases(stats, phaseCentres(volume, volumePath)));
   const std::vector<double> areaFractions = phaseAreaFractions(stats);
   nlohmann::json out = nlohmann::json::array();
   for (int k = 0; k < stats.phaseCentres.rows; ++k) {

@@ -33,7 +33,8 @@ nlohmann::json optionsJson(const ParticleTruthOptions& options) {
     classes.push_back({{"median_radius", c.meanRadius},
                        {"spread", c.radiusSpread},
                        {"share", c.share},
-                       {"srgb", {c.srgb[0], c.srgb[1], c.srgb[2]}}});
+                       {"srgb", {c.srgb[0], c.srgb[1], c.srgb[2]}},
+                       {"grain", c.grain}});
   return {{"volume_fraction", options.volumeFraction},
           {"classes", classes},
           {"elongation", options.elongation},

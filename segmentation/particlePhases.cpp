@@ -10,26 +10,60 @@
 #include "io/imageIO.h"
 #include "segmentation/detail/color.h"
 #include "segmentation/detail/summarize.h"
+#include "segmentation/particleShading.h"
 
 namespace solidtex {
 namespace {
 
 constexpr int kAttempts = 3;
 
-// The particles' mean colours in L*a*b*, one row each.
-cv::Mat particleLab(const ExemplarStats& stats) {
+// A grain contrast weighs this many L*a*b* units a unit: it is read about five times as finely as a
+// colour (plain particles' grain reads within about one L* unit on the truths, where shading
+// spreads a phase's colours over about five), so a phase told apart by its grain alone is as far
+// from the next as one told apart by colour.
+constexpr float kGrainWeight = 5;
+
+// The particles' features, one row each: mean colour in L*a*b* and grain contrast times
+// kGrainWeight. A particle too small to read its grain takes the median of those that show one.
+cv::Mat particleFeatures(const ExemplarStats& stats) {
   std::vector<cv::Vec3f> linear;
-  for (const Particle2D& p : stats.particles) linear.push_back(p.color);
-  return labOfColours(linear);
+  std::vector<double> grain, measured;
+  for (const Particle2D& p : stats.particles) {
+    linear.push_back(p.color);
+    grain.push_back(grainContrast(p));
+    if (!std::isnan(grain.back())) measured.push_back(grain.back());
+  }
+  double median = 0;
+  if (!measured.empty()) {
+    std::nth_element(measured.begin(), measured.begin() + std::ptrdiff_t(measured.size() / 2),
+                     measured.end());
+    median = measured[measured.size() / 2];
+  }
+  cv::Mat features;
+  cv::Mat grainColumn(int(grain.size()), 1, CV_32F);
+  for (std::size_t i = 0; i < grain.size(); ++i)
+    grainColumn.at<float>(int(i)) = kGrainWeight * float(std::isnan(grain[i]) ? median : grain[i]);
+  cv::hconcat(labOfColours(linear), grainColumn, features);
+  return features;
 }
 
-int nearestRow(const float* lab, const cv::Mat& centres) {
+// Centres with their grain column (if any) times `weight`: between the reports' L* units (the
+// centres ParticlePhases holds) and the features' weighting.
+cv::Mat scaledGrain(const cv::Mat& centres, float weight) {
+  cv::Mat out = centres.clone();
+  if (out.cols > 3) out.col(3) *= weight;
+  return out;
+}
+
+// The nearest centre over the features both hold (centres of three columns, from a solid made
+// before phases read grain, are colours alone).
+int nearestRow(const float* features, const cv::Mat& centres) {
   int best = 0;
   float bestDistance = std::numeric_limits<float>::max();
   for (int c = 0; c < centres.rows; ++c) {
     const float* m = centres.ptr<float>(c);
-    const float d = (lab[0] - m[0]) * (lab[0] - m[0]) + (lab[1] - m[1]) * (lab[1] - m[1]) +
-                    (lab[2] - m[2]) * (lab[2] - m[2]);
+    float d = 0;
+    for (int j = 0; j < centres.cols; ++j) d += (features[j] - m[j]) * (features[j] - m[j]);
     if (d < bestDistance) best = c, bestDistance = d;
   }
   return best;
@@ -43,13 +77,14 @@ ParticlePhases sortedPhases(const cv::Mat& centres, const std::vector<int>& labe
                    [&](int a, int b) { return centres.at<float>(a, 0) < centres.at<float>(b, 0); });
   ParticlePhases out;
   out.method = std::move(method);
-  out.centres.create(centres.rows, 3, CV_32F);
+  out.centres.create(centres.rows, centres.cols, CV_32F);
   for (int r = 0; r < centres.rows; ++r) {
     centres.row(order[std::size_t(r)]).copyTo(out.centres.row(r));
     rank[std::size_t(order[std::size_t(r)])] = r;
   }
   out.phaseOf.reserve(labels.size());
   for (int label : labels) out.phaseOf.push_back(rank[std::size_t(label)]);
+  out.centres = scaledGrain(out.centres, 1 / kGrainWeight);
   return out;
 }
 
@@ -59,60 +94,51 @@ struct Clustering {
   double bic = 0;
 };
 
-// A covariance floor (L*a*b* units squared): colours a drawn image repeats exactly, or a phase of
-// one particle, would otherwise have an infinite density.
+// A covariance floor (squared L* units): colours a drawn image repeats exactly, or a phase of one
+// particle, would otherwise have an infinite density.
 constexpr double kCovarianceFloor = 25.0;
 
 // The BIC of the Gaussian mixture the clustering stands for: each cluster's mean and covariance
 // (plus the floor), full or spherical, the weights its share. Full covariances follow the line
 // shading draws a phase's colours along, where one pooled spherical variance (X-means) splits it
-// into ever more phases; a few particles a phase (smarties) have too few colours for nine
-// parameters, and spherical ones tell them apart.
+// into ever more phases; a few particles a phase (smarties) have too few colours for a full
+// covariance's parameters, and spherical ones tell them apart.
 double bicOf(const cv::Mat& samples, const std::vector<int>& labels, int k, bool fullCovariance) {
-  const int n = samples.rows;
-  std::vector<cv::Vec3d> sums(std::size_t(k), cv::Vec3d(0, 0, 0));
-  std::vector<cv::Matx33d> products(std::size_t(k), cv::Matx33d::zeros());
-  std::vector<int> counts(std::size_t(k), 0);
-  for (int i = 0; i < n; ++i) {
-    const cv::Vec3d x(samples.at<float>(i, 0), samples.at<float>(i, 1), samples.at<float>(i, 2));
-    const auto c = std::size_t(labels[std::size_t(i)]);
-    sums[c] += x;
-    products[c] += x * x.t();
-    ++counts[c];
-  }
+  const int n = samples.rows, d = samples.cols;
+  cv::Mat x;
+  samples.convertTo(x, CV_64F);
   struct Component {
     double logWeight = 0;
-    cv::Vec3d mean;
-    cv::Matx33d inverse;
+    cv::Mat mean, inverse;
     double logNormalizer = 0;
   };
   std::vector<Component> components;
-  for (std::size_t c = 0; c < std::size_t(k); ++c) {
-    if (counts[c] == 0) continue;
-    const double m = counts[c];
-    const cv::Vec3d mean = sums[c] / m;
-    const cv::Matx33d scatter = products[c] * (1 / m) - mean * mean.t();
-    const double spread = (scatter(0, 0) + scatter(1, 1) + scatter(2, 2)) / 3;
-    const cv::Matx33d covariance =
-        (fullCovariance ? scatter : cv::Matx33d::eye() * spread) + cv::Matx33d::eye() * kCovarianceFloor;
-    components.push_back({std::log(m / n), mean, covariance.inv(cv::DECOMP_CHOLESKY),
-                          -0.5 * (3 * std::log(2 * M_PI) + std::log(cv::determinant(covariance)))});
+  for (int c = 0; c < k; ++c) {
+    cv::Mat members;
+    for (int i = 0; i < n; ++i)
+      if (labels[std::size_t(i)] == c) members.push_back(x.row(i));
+    if (members.empty()) continue;
+    cv::Mat scatter, mean;
+    cv::calcCovarMatrix(members, scatter, mean, cv::COVAR_NORMAL | cv::COVAR_ROWS | cv::COVAR_SCALE, CV_64F);
+    if (!fullCovariance) scatter = cv::Mat::eye(d, d, CV_64F) * (cv::trace(scatter)[0] / d);
+    const cv::Mat covariance = scatter + cv::Mat::eye(d, d, CV_64F) * kCovarianceFloor;
+    components.push_back({std::log(double(members.rows) / n), mean, covariance.inv(cv::DECOMP_CHOLESKY),
+                          -0.5 * (d * std::log(2 * M_PI) + std::log(cv::determinant(covariance)))});
   }
   double logLikelihood = 0;
   std::vector<double> terms(components.size());
   for (int i = 0; i < n; ++i) {
-    const cv::Vec3d x(samples.at<float>(i, 0), samples.at<float>(i, 1), samples.at<float>(i, 2));
     for (std::size_t c = 0; c < components.size(); ++c) {
-      const cv::Vec3d d = x - components[c].mean;
-      terms[c] =
-          components[c].logWeight + components[c].logNormalizer - 0.5 * d.dot(components[c].inverse * d);
+      const cv::Mat difference = x.row(i) - components[c].mean;
+      terms[c] = components[c].logWeight + components[c].logNormalizer -
+                 0.5 * difference.dot(difference * components[c].inverse);
     }
     const double top = *std::max_element(terms.begin(), terms.end());
     double sum = 0;
     for (double t : terms) sum += std::exp(t - top);
     logLikelihood += top + std::log(sum);
   }
-  const double parameters = (k - 1) + k * (3 + (fullCovariance ? 6 : 1));
+  const double parameters = (k - 1) + k * (d + (fullCovariance ? d * (d + 1) / 2 : 1));
   return -2 * logLikelihood + parameters * std::log(double(n));
 }
 
@@ -133,6 +159,17 @@ Clustering cluster(const cv::Mat& samples, int k, std::uint64_t seed) {
   return out;
 }
 
+// The fewest particles a phase the count chooses may hold: at least two and 1 % of the photo's. A
+// phase of one odd particle (two touching particles of different colours read as one) has one
+// section for its sizes and only the covariance floor for its model, which the BIC cannot weigh.
+bool everyClusterHoldsEnough(const Clustering& c, int k) {
+  const int n = int(c.labels.size());
+  const int least = std::max(2, int(std::ceil(0.01 * n)));
+  std::vector<int> counts(std::size_t(k), 0);
+  for (int label : c.labels) ++counts[std::size_t(label)];
+  return *std::min_element(counts.begin(), counts.end()) >= least;
+}
+
 std::string nameOf(const ExemplarStats& stats) { return stats.name.empty() ? "the photo" : stats.name; }
 
 }  // namespace
@@ -145,20 +182,21 @@ ParticlePhases classifyParticles(const ExemplarStats& stats, int phases, std::ui
   if (n < phases)
     throw InputError(nameOf(stats) + " shows " + std::to_string(n) + " particles, fewer than --phases " +
                      std::to_string(phases));
-  const cv::Mat samples = particleLab(stats);
+  const cv::Mat samples = particleFeatures(stats);
   if (phases > 0) {
     const Clustering c = cluster(samples, phases, seed);
-    return sortedPhases(c.centres, c.labels, "k-means of the particles' colours in CIE L*a*b*");
+    return sortedPhases(c.centres, c.labels, "k-means of the particles' colours in CIE L*a*b* and grain");
   }
   std::vector<double> bic;
   Clustering best;
   for (int k = 1; k <= std::min(kMaxPhases, n); ++k) {
     Clustering c = cluster(samples, k, seed);
     bic.push_back(c.bic);
-    if (k == 1 || c.bic < best.bic) best = std::move(c);
+    if (k == 1 || (c.bic < best.bic && everyClusterHoldsEnough(c, k))) best = std::move(c);
   }
-  ParticlePhases out = sortedPhases(best.centres, best.labels,
-                                    "k-means of the particles' colours in CIE L*a*b*, the count by BIC");
+  ParticlePhases out =
+      sortedPhases(best.centres, best.labels,
+                   "k-means of the particles' colours in CIE L*a*b* and grain, the count by BIC");
   out.bic = std::move(bic);
   return out;
 }
@@ -193,10 +231,10 @@ ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat&
   if (int(values.size()) > maxPhases)
     throw InputError(name + " gives the particles " + std::to_string(values.size()) + " phases, more than " +
                      (maxPhases == kMaxPhases ? std::string("8") : "--phases " + std::to_string(maxPhases)));
-  const cv::Mat samples = particleLab(stats);
+  const cv::Mat samples = particleFeatures(stats);
   ParticlePhases out;
   out.method = "phase mask " + name;
-  out.centres = cv::Mat::zeros(int(values.size()), 3, CV_32F);
+  out.centres = cv::Mat::zeros(int(values.size()), samples.cols, CV_32F);
   std::vector<int> counts(values.size(), 0);
   out.phaseOf.resize(majority.size());
   for (std::size_t i = 0; i < majority.size(); ++i) {
@@ -206,17 +244,19 @@ ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat&
     ++counts[std::size_t(c)];
   }
   for (int c = 0; c < out.centres.rows; ++c) out.centres.row(c) /= double(counts[std::size_t(c)]);
+  out.centres = scaledGrain(out.centres, 1 / kGrainWeight);
   return out;
 }
 
 ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres) {
-  const cv::Mat samples = particleLab(stats);
+  const cv::Mat samples = particleFeatures(stats);
   ParticlePhases out;
   out.method = "the nearest of the solid's phase colours";
   out.centres = centres.clone();
   out.phaseOf.resize(stats.particles.size());
+  const cv::Mat weighted = scaledGrain(centres, kGrainWeight);
   for (int i = 0; i < samples.rows; ++i)
-    out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), centres);
+    out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), weighted);
   return out;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file particlePhases.h
-/// @brief The photo's particles sorted into phases (kinds of particle) by their colour.
+/// @brief The photo's particles sorted into phases (kinds of particle) by their colour and grain.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -31,31 +31,35 @@ inline constexpr int kAutoPhases = 0;
 
 /// The particles' phases and how they were found.
 struct ParticlePhases {
-  /// K x 3 CV_32F, CIE L*a*b* (D65) of each phase: darkest first (classifyParticles), in the
-  /// mask's order of values (particlePhasesOfLabels), as given (nearestPhases).
+  /// K x 4 CV_32F, each phase's CIE L*a*b* (D65) colour and grain contrast (grainContrast, L*
+  /// units): darkest first (classifyParticles), in the mask's order of values
+  /// (particlePhasesOfLabels), as given (nearestPhases, where K x 3 centres are colours alone).
   cv::Mat centres;
   std::vector<int> phaseOf;  ///< per ExemplarStats::particles index, 0..K-1
   /// With the count chosen automatically: the Bayesian information criterion of 1, 2, ... phases
-  /// (the lowest won); empty otherwise.
+  /// (the lowest of the counts whose phases all hold enough particles won); empty otherwise.
   std::vector<double> bic;
   std::string method;  ///< how the phases were found, for reports
 };
 
 /// k-means (OpenCV, k-means++ seeded from `seed`, 3 attempts) of the particles' mean colours in
-/// CIE L*a*b*, each particle one sample. `phases` 0 chooses the count, 1 to 8 or the number of
-/// particles, by the lowest BIC of the Gaussian mixture (full or spherical covariances, the better)
-/// the clustering stands for. Throws OptionError for `phases` outside [0, 8], InputError for
+/// CIE L*a*b* and their grain contrast (in L* units; a particle too small to show its grain takes
+/// the median of those that do), each particle one sample. `phases` 0 chooses the count, 1 to 8 or
+/// the number of particles, by the lowest BIC of the Gaussian mixture (full or spherical
+/// covariances, the better) the clustering stands for, among the counts whose every phase holds at
+/// least two particles and 1 % of them. Throws OptionError for `phases` outside [0, 8], InputError for
 /// fewer particles than phases.
 ParticlePhases classifyParticles(const ExemplarStats& stats, int phases, std::uint64_t seed);
 
 /// The phases a label image gives: one per distinct colour (8 bits a channel), in increasing order
 /// of its packed RGB value; each particle takes the value most of its pixels show, each centre is
-/// the mean colour of its particles. `labelImage` is CV_32FC3 in [0, 1] (loadPhoto's form). Throws
+/// the mean colour and grain of its particles. `labelImage` is CV_32FC3 in [0, 1] (loadPhoto's form). Throws
 /// InputError, naming `name`, unless it is the photo's size and has 1 to `maxPhases` values.
 ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat& labelImage,
                                       const std::string& name, int maxPhases = kMaxPhases);
 
-/// The phase of the nearest centre (L*a*b*) of every particle's mean colour: how another photo's
+/// The phase of the nearest centre (colour and grain, or colour alone for K x 3 centres) of every
+/// particle: how another photo's
 /// (or a re-segmented photo's) particles are sorted into phases already found.
 ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres);
 

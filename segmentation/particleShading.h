@@ -21,4 +21,10 @@ constexpr double kShadingSigma = 2.0;
 /// the mask's own smoothing so that the outline does not pull the shading towards zero.
 ResidualScales splitResidual(const Particle2D& particle, double sigma = kShadingSigma);
 
+/// How grainy the particle looks: the root mean square of its grain (splitResidual) in CIE L*
+/// units, over the pixels at least two pixels inside its outline (the outline's pixels mix with
+/// the matrix), or one pixel in a particle too small for that. Shading, smooth across the
+/// particle, does not count. NaN when fewer than nine pixels lie a pixel inside.
+double grainContrast(const Particle2D& particle);
+
 }  // namespace solidtex

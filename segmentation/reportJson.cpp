@@ -20,11 +20,13 @@ nlohmann::json histogramJson(const AreaHistogram& h) {
 nlohmann::json phasesJson(const ExemplarStats& stats) {
   const std::vector<double> fractions = phaseAreaFractions(stats);
   const nlohmann::json colours = phaseColoursJson(stats.phaseCentres);
+  const nlohmann::json grain = phaseGrainJson(stats.phaseCentres);
   nlohmann::json out = nlohmann::json::array();
   for (int k = 0; k < stats.phaseCentres.rows; ++k) {
     const ExemplarStats phase = phaseStats(stats, k);
     out.push_back({{"phase", k + 1},
                    {"lab", colours[std::size_t(k)]},
+                   {"grain", grain.is_null() ? nullptr : grain[std::size_t(k)]},
                    {"particle_count", phase.particles.size()},
                    {"area_fraction", fractions[std::size_t(k)]},
                    {"histogram", histogramJson(phase.histogram)}});
@@ -38,6 +40,13 @@ nlohmann::json phaseColoursJson(const cv::Mat& centres) {
   nlohmann::json out = nlohmann::json::array();
   for (int r = 0; r < centres.rows; ++r)
     out.push_back({centres.at<float>(r, 0), centres.at<float>(r, 1), centres.at<float>(r, 2)});
+  return out;
+}
+
+nlohmann::json phaseGrainJson(const cv::Mat& centres) {
+  if (centres.cols < 4) return nullptr;
+  nlohmann::json out = nlohmann::json::array();
+  for (int r = 0; r < centres.rows; ++r) out.push_back(centres.at<float>(r, 3));
   return out;
 }
 

@@ -11,8 +11,12 @@ namespace solidtex {
 /// ratios} and `size_pairs` [{width, height, count}].
 nlohmann::json toJson(const ExemplarStats& stats);
 
-/// Phase colours (K x 3 CV_32F, CIE L*a*b*, as ExemplarStats::phaseCentres) as [[L, a, b], ...]: the
-/// report's and the `.vdb`'s `phase_lab`.
+/// Phase colours (the first three columns of ExemplarStats::phaseCentres, CIE L*a*b*) as
+/// [[L, a, b], ...]: the report's and the `.vdb`'s `phase_lab`.
 nlohmann::json phaseColoursJson(const cv::Mat& centres);
+
+/// Phase grain contrasts (the fourth column of ExemplarStats::phaseCentres, L* units) as [g, ...]:
+/// the report's and the `.vdb`'s `phase_grain`; null when the centres hold colours alone.
+nlohmann::json phaseGrainJson(const cv::Mat& centres);
 
 }  // namespace solidtex

@@ -241,10 +241,13 @@ cv::Mat renderSection(const ParticleTruth& truth, const ParticleTruthOptions& op
       at[across] = i;
       at[down] = j;
       const std::int32_t id = truth.volume.particleId[dims.index(at[0], at[1], at[2])];
-      photo.at<cv::Vec3f>(j, i) =
-          id > 0 ? options.classes[std::size_t(truth.classOf[std::size_t(id - 1)])].srgb *
-                       shade[std::size_t(id - 1)]
-                 : options.backgroundSrgb;
+      if (id == 0) {
+        photo.at<cv::Vec3f>(j, i) = options.backgroundSrgb;
+        continue;
+      }
+      const ParticleClass& c = options.classes[std::size_t(truth.classOf[std::size_t(id - 1)])];
+      const double speckle = c.grain > 0 ? 1 + c.grain * standardNormal(rng) : 1;
+      photo.at<cv::Vec3f>(j, i) = c.srgb * float(shade[std::size_t(id - 1)] * std::max(0.0, speckle));
     }
   // A lens blurs what it sees and the sensor then adds its noise, so the noise stays sharp.
   if (options.blur > 0) cv::GaussianBlur(photo, photo, cv::Size(), options.blur, options.blur);
@@ -262,6 +265,7 @@ void validateClass(const ParticleClass& c, const ParticleTruthOptions& options) 
     throw OptionError("--small-radius, --medium-radius and --large-radius must be at least 1 voxel");
   if (!(c.share > 0 && c.share <= 1)) throw OptionError("--large-share must be between 0 and 1");
   if (!(c.radiusSpread >= 0 && c.radiusSpread <= 1)) throw OptionError("--spread must be between 0 and 1");
+  if (!(c.grain >= 0 && c.grain <= 1)) throw OptionError("--medium-grain must be between 0 and 1");
   // Radii stop at two spreads; centred log stretches reach elongation^(4/3), flattening widens the
   // other axes by flatten^(-1/3). A periodic volume must hold the longest particle with room to
   // spare, or it would touch its own image.

@@ -212,6 +212,8 @@ TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --phases 9", "--phases"},
       {"analyze IN/coins.png --phases two", "--phases"},
       {"truth -o OUT/t --dims 64 64 16 --medium-share 0.9", "--medium-share"},
+      {"truth -o OUT/t --dims 64 64 16 --medium-share 0.2 --medium-grain 1.5", "--medium-grain"},
+      {"truth -o OUT/t --dims 64 64 16 --medium-share 0.2 --medium-srgb 1 2 0", "--medium-srgb"},
       {"compare IN/coins.png IN/good.vdb --plane zx", "--plane"},
       {"compare IN/coins.png IN/good.vdb --plane xy --measures s2", "--plane"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --scale 1e-300", "--scale"},

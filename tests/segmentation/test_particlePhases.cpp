@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
 #include <set>
 
 #include "common/Error.h"
@@ -71,6 +73,65 @@ TEST(ParticlePhases, PhasesSplitTheParticlesAndTheirArea) {
   const ParticlePhases again = nearestPhases(stats, stats.phaseCentres);
   for (std::size_t i = 0; i < stats.particles.size(); ++i)
     EXPECT_EQ(again.phaseOf[i], stats.particles[i].phase);
+}
+
+// A third class of the small class's orange, told apart by its speckle alone (`truth`'s grain 0.1),
+// is a phase of its own: the BIC finds three phases, two of them orange and some 4 L* units apart in
+// grain, and each phase's particles are of one truth class (by the truth's particle under most of
+// each photo particle): all of 60 pixels and more, and 90 % of all (a grain read on a section of
+// some 30 pixels is noisy, and sections of 20 and less, too small to read one, take the phases'
+// median and fall to either orange phase).
+TEST(ParticlePhases, GrainTellsApartAClassOfTheSameColour) {
+  ParticleTruthOptions options;
+  options.dims = {320, 320, 48};
+  options.classes[0].meanRadius = 5;
+  options.classes[0].share = 0.45;
+  options.classes[1].meanRadius = 10;
+  ParticleClass grainy{7.5, 0.2, 0.3, options.classes[0].srgb};
+  grainy.grain = 0.1;
+  options.classes.insert(options.classes.begin() + 1, grainy);
+  options.seed = 5;
+  const ParticleTruth truth = makeParticleTruth(options);
+  const ExemplarStats stats = analyzeExemplar(truth.photo, "truth", {});
+  const ParticlePhases phases = classifyParticles(stats, kAutoPhases, 1);
+  ASSERT_EQ(phases.centres.rows, 3);
+  ASSERT_EQ(phases.centres.cols, 4);
+  const Dims& dims = truth.volume.dims;
+  std::vector<std::array<int, 3>> classesOfPhase(3, {0, 0, 0});
+  std::vector<std::set<int>> readable(3);  // the classes of each phase's particles of 60 pixels or more
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
+    const Particle2D& p = stats.particles[i];
+    std::map<std::int32_t, int> votes;
+    for (int y = 0; y < p.box.height; ++y)
+      for (int x = 0; x < p.box.width; ++x)
+        if (p.mask.at<std::uint8_t>(y, x))
+          ++votes[truth.volume.particleId[dims.index(p.box.x + x, p.box.y + y, dims.z / 2)]];
+    const std::int32_t id = std::max_element(votes.begin(), votes.end(), [](auto& a, auto& b) {
+                              return a.second < b.second;
+                            })->first;
+    ASSERT_GT(id, 0);
+    const int truthClass = truth.classOf[std::size_t(id - 1)];
+    ++classesOfPhase[std::size_t(phases.phaseOf[i])][std::size_t(truthClass)];
+    if (p.area >= 60) readable[std::size_t(phases.phaseOf[i])].insert(truthClass);
+  }
+  std::set<int> majorities;
+  for (int k = 0; k < 3; ++k) {
+    const auto& counts = classesOfPhase[std::size_t(k)];
+    const auto top = std::max_element(counts.begin(), counts.end());
+    majorities.insert(int(top - counts.begin()));
+    EXPECT_GE(*top, 0.9 * (counts[0] + counts[1] + counts[2])) << "phase " << k;
+    EXPECT_EQ(readable[std::size_t(k)].size(), 1u) << "phase " << k;
+  }
+  EXPECT_EQ(majorities.size(), 3u);
+  // The two orange phases: one colour, grain apart.
+  std::vector<int> orange;
+  for (int k = 0; k < 3; ++k)
+    if (phases.centres.at<float>(k, 2) > 0) orange.push_back(k);
+  ASSERT_EQ(orange.size(), 2u);
+  EXPECT_LT(
+      cv::norm(phases.centres.row(orange[0]).colRange(0, 3), phases.centres.row(orange[1]).colRange(0, 3)),
+      3.0);
+  EXPECT_GT(std::abs(phases.centres.at<float>(orange[0], 3) - phases.centres.at<float>(orange[1], 3)), 3.0f);
 }
 
 // A label image sorts each particle by the value under most of it; too many values for the count
