@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The reconstruction's default options against the paper's baseline on photos cut from a family of
 # known 3D truths (`solidtex truth`: shapes, size mixes, fractions, particle counts, photo blur and
-# noise): section-area KS against the photo; particle-volume W1/mean, section solidity and roundness
-# KS and the window spread ratio against the truth and its sections; as a Markdown table. An
+# noise): section-area KS against the photo; particle-volume W1/mean of the placed particles (solid
+# seeds 1 and 2) and of the whole particles in the block, where the truth's volume CDF lies against
+# the sizing's band, section solidity and roundness KS and the window spread ratio against the
+# truth and its sections; as a Markdown table. An
 # ideal solid per row: a second truth of the same settings and another seed, made at the solid's
 # voxels per pixel and compared the same way: what a perfect reconstruction would score.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
@@ -64,12 +66,19 @@ run_one() {
   else
     python3 - "$dir" "$name" "$seed" <<'PY'
 import json, sys
-d, b, i = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "baseline", "ideal"))
+d, d2, b, i = (json.load(open(f"{sys.argv[1]}/{k}.json")) for k in ("default", "default2", "baseline", "ideal"))
+def band(r):
+    c = r["truth"].get("volume_cdf_band")
+    return "-" if c is None else f"{c['largest_excursion']:.3f}" + ("" if c["meets_truth_band_everywhere"] else " (no)")
 def cells(r):
     t = r["truth"]
     return [f"{r['ks']:.3f}", f"{t['volume_wasserstein1_over_mean']:.3f}", f"{t['solidity_ks']:.3f}",
             f"{t['roundness_ks']:.3f}", f"{t['window_spread_ratio']:.2f}", f"{r['volume_fraction']:.3f}"]
-row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *cells(d), *cells(b), *cells(i)[1:5],
+w1 = lambda r: r["truth"]["volume_wasserstein1_over_mean"]
+default = [f"{d['ks']:.3f}", f"{w1(d):.3f} / {w1(d2):.3f}",
+           f"{d['truth']['whole_in_block']['volume_wasserstein1_over_mean']:.3f}",
+           f"{band(d)} / {band(d2)} vs {d['truth']['volume_cdf_band']['truth_dkw_bound_90']:.3f}", *cells(d)[2:]]
+row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *default, *cells(b), *cells(i)[1:5],
        f"{d['area_fraction']:.3f}"]
 print("| " + " | ".join(row) + " |")
 PY
@@ -83,8 +92,9 @@ measure_one() {
   shift 2
   "$bin" truth -o "$dir/t" --seed "$seed" "$@" > /dev/null || return
   "$bin" particles "$dir/t/photo.png" -o "$dir/default.vdb" --size "$size" --quiet > /dev/null || return
+  "$bin" particles "$dir/t/photo.png" -o "$dir/default2.vdb" --size "$size" --seed 2 --quiet > /dev/null || return
   "$bin" particles "$dir/t/photo.png" -o "$dir/baseline.vdb" --size "$size" "${baseline[@]}" --quiet > /dev/null || return
-  for run in default baseline; do
+  for run in default default2 baseline; do
     "$bin" compare "$dir/t/photo.png" "$dir/$run.vdb" --truth "$dir/t/truth.vdb" --report "$dir/$run.json" > /dev/null || return
   done
   local scale scaled ideal
@@ -123,10 +133,10 @@ PY
 
 echo "Baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
 echo
-echo "| truth | seed | photo particles | KS | volume W1/mean | solidity KS | roundness KS | window spread ratio | volume fraction |" \
+echo "| truth | seed | photo particles | KS | volume W1/mean, placed, solid seeds 1 / 2 | volume W1/mean, whole in block, seed 1 | band: largest excursion, seeds 1 / 2 vs the truth's bound | solidity KS | roundness KS | window spread ratio | volume fraction |" \
      "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline roundness KS | baseline window spread ratio | baseline volume fraction |" \
      "ideal volume W1/mean | ideal solidity KS | ideal roundness KS | ideal window spread ratio | photo fraction |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 index=0
 for truth in "${truths[@]}"; do
   name=${truth%%|*}

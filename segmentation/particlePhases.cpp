@@ -94,7 +94,7 @@ struct Clustering {
   double bic = 0;
 };
 
-// A covariance floor (squared L* units): colours a drawn image repeats exactly, or a phase of one
+// A covariance floor (squared L*a*b* units): colours a drawn image repeats exactly, or a phase of one
 // particle, would otherwise have an infinite density.
 constexpr double kCovarianceFloor = 25.0;
 
