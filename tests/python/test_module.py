@@ -99,6 +99,9 @@ class InMemoryTest(unittest.TestCase):
         self.assertEqual(phase.tobytes(), solid["phase"].tobytes())
         np.testing.assert_array_equal(phase > 0, solid["particle_id"] > 0)
         self.assertEqual(solid["report"]["phases"]["count"], 5)
+        for phase_class in solid["report"]["phases"]["classes"]:
+            self.assertEqual(len(phase_class["lab"]), 3)
+            self.assertGreaterEqual(phase_class["grain"], 0)
         self.assertLessEqual(int(phase.max()), 5)
         # One phase per particle.
         ids = solid["particle_id"]
