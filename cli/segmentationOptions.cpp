@@ -45,9 +45,9 @@ void addPhaseOptions(CLI::App& command, PhaseOptions& options) {
   command
       .add_option_function<std::string>(
           "--phases", [&options](const std::string& value) { options.phases = phaseCount(value); },
-          "Kinds of particle, sorted by colour (k-means in CIE L*a*b*): a count from 1 to 8, or auto (the "
-          "count the colours' BIC chooses); each kind gets its own sizes, shapes, colours and share, and "
-          "the solid a phase grid")
+          "Kinds of particle, sorted by colour and grain (k-means in CIE L*a*b* and grain contrast): a "
+          "count from 1 to 8, or auto (the count the BIC chooses); each kind gets its own sizes, shapes, "
+          "colours and share, and the solid a phase grid")
       ->check(CLI::Validator(
           [](std::string& value) {
             return phaseCount(value) < 0 ? "must be auto or a count from 1 to 8, got " + value

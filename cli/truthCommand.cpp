@@ -53,12 +53,14 @@ Action addTruthCommand(CLI::App& app) {
                    "Colour of the medium class, sRGB in [0, 1] (default green; the small class's 0.92 0.55 "
                    "0.16 with --medium-grain makes a class told apart by its grain alone)")
       ->expected(3)
-      ->check(between(0, 1));
+      ->check(between(0, 1))
+      ->needs("--medium-share");
   command
       ->add_option("--medium-grain", medium->grain,
-                   "Speckle of the medium class: each pixel's lightness varies by this standard deviation "
-                   "(0 = plain)")
+                   "Speckle of the medium class: each pixel's sRGB value varies by this relative standard "
+                   "deviation (0 = plain)")
       ->check(between(0, 1))
+      ->needs("--medium-share")
       ->capture_default_str();
   auto spread = std::make_shared<double>(t.classes[0].radiusSpread);
   command->add_option("--spread", *spread, "Standard deviation of log radius (both classes, 0-1)")

@@ -14,7 +14,7 @@ namespace solidtex {
 struct AnalyzeJob {
   std::string photo;
   SegmentationOptions segmentation;
-  PhaseOptions phases;                ///< kinds of particle, sorted by colour or by a label image
+  PhaseOptions phases;                ///< kinds of particle, sorted by colour and grain or by a label image
   std::uint64_t seed = 1;             ///< the k-means' seed
   std::optional<std::string> report;  ///< JSON report path
   std::optional<std::string> labels;  ///< PNG with outlines and ids

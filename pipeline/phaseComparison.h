@@ -11,8 +11,9 @@
 
 namespace solidtex {
 
-/// For a solid with phases (SolidVolume::particlePhase and the `phase_lab` colours of its .vdb,
-/// named `volumePath` in errors): the photo's particles sorted by the nearest of those colours and,
+/// For a solid with phases (SolidVolume::particlePhase and the `phase_lab` colours and
+/// `phase_grain` of its .vdb, named `volumePath` in errors): the photo's particles sorted by the
+/// nearest of those phase centres and,
 /// phase by phase, the photo's particles against the sections of the solid's particles of the
 /// phase: area and volume fractions, section areas (KS, W1 / mean), shapes (compareSections). Null
 /// for a solid of one phase. `stats` is the photo's, `scale` voxels per photo pixel, `options` the

@@ -1,6 +1,9 @@
 #include "pipeline/truthJob.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "common/Error.h"
 #include "common/memoryBudget.h"
@@ -8,7 +11,9 @@
 #include "io/imageIO.h"
 #include "io/vdbIO.h"
 #include "pipeline/jobOutputs.h"
+#include "segmentation/analyzeExemplar.h"
 #include "segmentation/particlePhases.h"
+#include "segmentation/particleShading.h"
 #include "segmentation/reportJson.h"
 
 namespace solidtex {
@@ -54,6 +59,35 @@ nlohmann::json classColoursJson(const std::vector<ParticleClass>& classes) {
   return phaseColoursJson(labOfColours(linear));
 }
 
+// Each class's grain as the photo shows it: the mean grain contrast of the photo's particles of the
+// class (the class of the truth particle under most of each). Classes that differ by grain alone
+// share one `phase_lab` colour; with this `phase_grain`, as with a solid's, `compare` tells them apart.
+nlohmann::json classGrainJson(const ParticleTruth& truth, std::size_t classes) {
+  const ExemplarStats stats = analyzeExemplar(truth.photo, "photo.png", {});
+  const Dims& d = truth.volume.dims;
+  std::vector<double> sums(classes, 0.0);
+  std::vector<int> counts(classes, 0);
+  for (const Particle2D& p : stats.particles) {
+    const double grain = grainContrast(p);
+    if (std::isnan(grain)) continue;
+    std::map<std::int32_t, int> votes;
+    for (int y = 0; y < p.box.height; ++y)
+      for (int x = 0; x < p.box.width; ++x)
+        if (p.mask.at<std::uint8_t>(y, x))
+          ++votes[truth.volume.particleId[d.index(p.box.x + x, p.box.y + y, d.z / 2)]];
+    const std::int32_t id = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) {
+                              return a.second < b.second;
+                            })->first;
+    if (id == 0) continue;
+    const auto c = std::size_t(truth.classOf[std::size_t(id - 1)]);
+    sums[c] += grain;
+    ++counts[c];
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t c = 0; c < classes; ++c) out.push_back(counts[c] > 0 ? sums[c] / counts[c] : 0.0);
+  return out;
+}
+
 }  // namespace
 
 // Peak resident memory per voxel: 30 measured (367 MiB at 256x256x128, less the 130 MiB every run holds).
@@ -75,6 +109,9 @@ nlohmann::json runTruth(const TruthJob& job) {
   if (job.truth.classes.size() > 1) {
     truth.volume.particlePhase.assign(truth.classOf.begin(), truth.classOf.end());
     truth.volume.metadata["phase_lab"] = classColoursJson(job.truth.classes).dump();
+    if (std::any_of(job.truth.classes.begin(), job.truth.classes.end(),
+                    [](const ParticleClass& c) { return c.grain > 0; }))
+      truth.volume.metadata["phase_grain"] = classGrainJson(truth, job.truth.classes.size()).dump();
   }
   nlohmann::json report = {
       {"dims", {truth.volume.dims.x, truth.volume.dims.y, truth.volume.dims.z}},

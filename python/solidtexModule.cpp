@@ -620,7 +620,8 @@ PYBIND11_MODULE(solidtex, m) {
         "or float sRGB in [0, 1]): its statistics (particles, area fraction, area histogram) as a dict, "
         "with particle_labels, an (H, W) int32 array of the particles' ids (0 = background). "
         "Keywords: mask (a path, a bool array or an image array, white = particle), invert, split, outlines, "
-        "min_area; phases (an int 1-8 or \"auto\": the particles sorted by colour), phase_mask (a path), "
+        "min_area; phases (an int 1-8 or \"auto\": the particles sorted by colour and grain), phase_mask (a "
+        "path), "
         "seed; labels and report write the outlined photo "
         "(PNG) and the statistics (JSON).");
   m.def("particles", &particles, py::arg("photo"),

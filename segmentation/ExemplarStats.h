@@ -57,7 +57,8 @@ struct ExemplarStats {
   double areaShareBelowMinArea = 0;  ///< their share of the area of all regions of 4 pixels or more
   AreaHistogram histogram;
   std::vector<SizePair> sizePairs;  ///< over non-border particles, sorted by (width, height)
-  cv::Mat phaseCentres;  ///< K x 4 CV_32F, each phase's CIE L*a*b* colour and grain; empty: one phase
+  cv::Mat
+      phaseCentres;  ///< K x 4 (K x 3: colour alone) CV_32F, each phase's L*a*b* and grain; empty: one phase
 };
 
 }  // namespace solidtex

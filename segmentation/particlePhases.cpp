@@ -24,7 +24,8 @@ constexpr int kAttempts = 3;
 constexpr float kGrainWeight = 5;
 
 // The particles' features, one row each: mean colour in L*a*b* and grain contrast times
-// kGrainWeight. A particle too small to read its grain takes the median of those that show one.
+// kGrainWeight. A particle too small to read its grain takes the median of those that show one;
+// when none shows one, the colours alone.
 cv::Mat particleFeatures(const ExemplarStats& stats) {
   std::vector<cv::Vec3f> linear;
   std::vector<double> grain, measured;
@@ -33,12 +34,10 @@ cv::Mat particleFeatures(const ExemplarStats& stats) {
     grain.push_back(grainContrast(p));
     if (!std::isnan(grain.back())) measured.push_back(grain.back());
   }
-  double median = 0;
-  if (!measured.empty()) {
-    std::nth_element(measured.begin(), measured.begin() + std::ptrdiff_t(measured.size() / 2),
-                     measured.end());
-    median = measured[measured.size() / 2];
-  }
+  // No particle large enough to show a grain: a constant column would only add parameters to the BIC.
+  if (measured.empty()) return labOfColours(linear);
+  std::nth_element(measured.begin(), measured.begin() + std::ptrdiff_t(measured.size() / 2), measured.end());
+  const double median = measured[measured.size() / 2];
   cv::Mat features;
   cv::Mat grainColumn(int(grain.size()), 1, CV_32F);
   for (std::size_t i = 0; i < grain.size(); ++i)
@@ -47,11 +46,17 @@ cv::Mat particleFeatures(const ExemplarStats& stats) {
   return features;
 }
 
-// Centres with their grain column (if any) times `weight`: between the reports' L* units (the
-// centres ParticlePhases holds) and the features' weighting.
-cv::Mat scaledGrain(const cv::Mat& centres, float weight) {
+// Centres in the features' weighting, from the reports' L* units (the centres ParticlePhases
+// holds), and back.
+cv::Mat centresWithWeightedGrain(const cv::Mat& centres) {
   cv::Mat out = centres.clone();
-  if (out.cols > 3) out.col(3) *= weight;
+  if (out.cols > 3) out.col(3) *= kGrainWeight;
+  return out;
+}
+
+cv::Mat centresWithGrainInLightness(const cv::Mat& centres) {
+  cv::Mat out = centres.clone();
+  if (out.cols > 3) out.col(3) /= kGrainWeight;
   return out;
 }
 
@@ -84,7 +89,7 @@ ParticlePhases sortedPhases(const cv::Mat& centres, const std::vector<int>& labe
   }
   out.phaseOf.reserve(labels.size());
   for (int label : labels) out.phaseOf.push_back(rank[std::size_t(label)]);
-  out.centres = scaledGrain(out.centres, 1 / kGrainWeight);
+  out.centres = centresWithGrainInLightness(out.centres);
   return out;
 }
 
@@ -244,17 +249,17 @@ ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat&
     ++counts[std::size_t(c)];
   }
   for (int c = 0; c < out.centres.rows; ++c) out.centres.row(c) /= double(counts[std::size_t(c)]);
-  out.centres = scaledGrain(out.centres, 1 / kGrainWeight);
+  out.centres = centresWithGrainInLightness(out.centres);
   return out;
 }
 
 ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres) {
   const cv::Mat samples = particleFeatures(stats);
   ParticlePhases out;
-  out.method = "the nearest of the solid's phase colours";
+  out.method = "the nearest of the solid's phase centres (colour and grain)";
   out.centres = centres.clone();
   out.phaseOf.resize(stats.particles.size());
-  const cv::Mat weighted = scaledGrain(centres, kGrainWeight);
+  const cv::Mat weighted = centresWithWeightedGrain(centres);
   for (int i = 0; i < samples.rows; ++i)
     out.phaseOf[std::size_t(i)] = nearestRow(samples.ptr<float>(i), weighted);
   return out;

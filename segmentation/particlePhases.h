@@ -44,7 +44,8 @@ struct ParticlePhases {
 
 /// k-means (OpenCV, k-means++ seeded from `seed`, 3 attempts) of the particles' mean colours in
 /// CIE L*a*b* and their grain contrast (in L* units; a particle too small to show its grain takes
-/// the median of those that do), each particle one sample. `phases` 0 chooses the count, 1 to 8 or
+/// the median of those that do; with none that does, colours alone and K x 3 centres), each
+/// particle one sample. `phases` 0 chooses the count, 1 to 8 or
 /// the number of particles, by the lowest BIC of the Gaussian mixture (full or spherical
 /// covariances, the better) the clustering stands for, among the counts whose every phase holds at
 /// least two particles and 1 % of them. Throws OptionError for `phases` outside [0, 8], InputError for
@@ -59,8 +60,8 @@ ParticlePhases particlePhasesOfLabels(const ExemplarStats& stats, const cv::Mat&
                                       const std::string& name, int maxPhases = kMaxPhases);
 
 /// The phase of the nearest centre (colour and grain, or colour alone for K x 3 centres) of every
-/// particle: how another photo's
-/// (or a re-segmented photo's) particles are sorted into phases already found.
+/// particle: how another photo's (or a re-segmented photo's) particles are sorted into phases
+/// already found.
 ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres);
 
 /// The phases `options` ask for (classifyParticles, or particlePhasesOfLabels of the mask read
@@ -68,8 +69,8 @@ ParticlePhases nearestPhases(const ExemplarStats& stats, const cv::Mat& centres)
 std::optional<ParticlePhases> findPhases(const ExemplarStats& stats, const PhaseOptions& options,
                                          std::uint64_t seed);
 
-/// CIE L*a*b* of linear-RGB colours, one row each (K x 3 CV_32F): phase colours as the centres
-/// hold them.
+/// CIE L*a*b* of linear-RGB colours, one row each (K x 3 CV_32F): phase colours as the centres'
+/// first three columns hold them.
 cv::Mat labOfColours(const std::vector<cv::Vec3f>& linear);
 
 /// Writes the phases into the statistics (Particle2D::phase, ExemplarStats::phaseCentres).

@@ -27,8 +27,8 @@ struct ParticleClass {
   double radiusSpread = 0.2;  ///< standard deviation of the radius' logarithm
   double share = 0.75;        ///< share of the particles, by number
   cv::Vec3f srgb{0.92f, 0.55f, 0.16f};
-  /// Speckle of the material, in the photo: each pixel's lightness scaled by 1 + grain x a standard
-  /// normal draw (0 = plain), so that a class can differ from another by its grain alone.
+  /// Speckle in the photo: each pixel's sRGB value times 1 + grain x a standard normal draw (a
+  /// relative standard deviation; 0 = plain), so that a class can differ by its grain alone.
   double grain = 0;
 };
 

@@ -252,6 +252,38 @@ TEST(TwoPhaseTruth, EachPhaseKeepsItsFraction) {
   }
 }
 
+// Two classes of one orange, one of them speckled: the truth's .vdb keeps each class's grain as its
+// photo shows it (phase_grain), so `compare` sorts the photo's particles into both classes, not
+// all into the first of two equal colours; each phase's share of the photo is near its class's
+// share of the volume.
+TEST(GrainyTruth, CompareTellsApartItsClassesOfOneColour) {
+  const fs::path dir = fs::temp_directory_path() / "solidtex_truth_test" / "grainy";
+  fs::remove_all(dir);
+  TruthJob truth;
+  truth.folder = dir.string();
+  truth.truth.dims = {320, 320, 48};
+  truth.truth.classes[0].meanRadius = 5;
+  truth.truth.classes[1] = truth.truth.classes[0];
+  truth.truth.classes[0].share = truth.truth.classes[1].share = 0.5;
+  truth.truth.classes[1].grain = 0.1;
+  truth.truth.seed = 2;
+  const nlohmann::json truthReport = runTruth(truth);
+  const SolidVolume volume = readVdb((dir / "truth.vdb").string(), {false, false, true});
+  const nlohmann::json grain = nlohmann::json::parse(volume.metadata.at("phase_grain"));
+  ASSERT_EQ(grain.size(), 2u);
+  EXPECT_GT(grain[1].get<double>(), grain[0].get<double>() + 3);
+  CompareJob compare;
+  compare.photo = (dir / "photo.png").string();
+  compare.volume = (dir / "truth.vdb").string();
+  compare.measures = parseMeasureSelection("none");
+  const nlohmann::json phases = runCompare(compare)["phases"];
+  ASSERT_EQ(phases.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_NEAR(phases[k]["area_fraction"].get<double>(),
+                truthReport["volume_fraction_per_class"][k].get<double>(), 0.03)
+        << k;
+}
+
 TEST(TruthJob, RefusesAFolderItCannotCreate) {
   TruthJob job;
   job.truth.dims = {64, 64, 64};

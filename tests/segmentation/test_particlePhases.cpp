@@ -69,10 +69,14 @@ TEST(ParticlePhases, PhasesSplitTheParticlesAndTheirArea) {
     EXPECT_EQ(std::size_t(counted), statisticalParticles(phase.particles).size());
   }
   EXPECT_EQ(total, stats.particles.size());
-  // The nearest centre of each particle's colour gives the same phases back.
+  // The nearest centre of each particle's colour and grain gives the same phases back, and so do
+  // the colours alone (a solid made before phases read grain has K x 3 centres).
   const ParticlePhases again = nearestPhases(stats, stats.phaseCentres);
-  for (std::size_t i = 0; i < stats.particles.size(); ++i)
+  const ParticlePhases byColour = nearestPhases(stats, stats.phaseCentres.colRange(0, 3).clone());
+  for (std::size_t i = 0; i < stats.particles.size(); ++i) {
     EXPECT_EQ(again.phaseOf[i], stats.particles[i].phase);
+    EXPECT_EQ(byColour.phaseOf[i], stats.particles[i].phase);
+  }
 }
 
 // A third class of the small class's orange, told apart by its speckle alone (`truth`'s grain 0.1),

@@ -37,13 +37,13 @@ TEST(GrainContrast, ShadingAcrossTheParticleIsNotGrain) {
 }
 
 // A speckle scaling each pixel's linear colour by 1 + s n (n standard normal) changes L* by about
-// s (L* + 16) / 3 (dL* / d ln Y at this grey), 2.26 L* units for s = 0.1; the smoothing that
-// takes out the shading keeps all but about 1 / (8 pi) of a white speckle's variance.
+// s (L* + 16) / 3 (dL* / d ln Y at this grey), 2.26 L* units for s = 0.1; taking off its smoothing
+// by a Gaussian of sigma 2 keeps 1 - 2 g(0) + sum g^2 = 1 - 3 / (16 pi) of a white speckle's variance.
 TEST(GrainContrast, ReadsASpeckleInLightnessUnits) {
   std::mt19937 rng(3);
   std::normal_distribution<float> normal;
   const Particle2D p = disc(14, [&](int, int) { return 1 + 0.1f * normal(rng); });
-  const double expected = 0.1 * (51.84 + 16) / 3 * std::sqrt(1 - 1 / (8 * M_PI));
+  const double expected = 0.1 * (51.84 + 16) / 3 * std::sqrt(1 - 3 / (16 * M_PI));
   EXPECT_NEAR(grainContrast(p), expected, 0.1 * expected);
 }
 
