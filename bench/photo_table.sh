@@ -9,7 +9,7 @@ shift || true
 seeds=("$@")
 [ ${#seeds[@]} -eq 0 ] && seeds=(1)
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
-paper=(--sizing bbox --arrangement best-fit --smoothing 0 --boundary walls)
+paper=(--sizing bbox --arrangement best-fit --smoothing 0 --body-form 0 --boundary walls)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 echo "| photo | photo particles | options | seed | KS (5 % critical) | W1/mean | solidity KS | roundness KS (5 % critical) | window spread ratio | neighbour distance ratio | volume fraction (photo) |"

@@ -3,14 +3,16 @@
 # known 3D truths (`solidtex truth`: shapes, size mixes, fractions, particle counts, photo blur and
 # noise): section-area KS against the photo; particle-volume W1/mean of the placed particles (solid
 # seeds 1 and 2) and of the whole particles in the block, where the truth's volume CDF lies against
-# the sizing's band, section solidity and roundness KS and the window spread ratio against the
+# the sizing's band, section solidity, roundness and aspect KS and the window spread ratio against the
 # truth and its sections; as a Markdown table. An
 # ideal solid per row: a second truth of the same settings and another seed, made at the solid's
 # voxels per pixel and compared the same way: what a perfect reconstruction would score.
 # Usage: bench/truth_sweep.sh [SIZE] [TRUTH SEEDS...]   (run from the repo root after building)
 # Environment: BASELINE_FLAGS  particles options of the baseline (default: the paper's,
-#                            "--sizing bbox --arrangement best-fit --smoothing 0 --boundary walls")
+#                            "--sizing bbox --arrangement best-fit --smoothing 0 --body-form 0 --boundary walls")
 #              JOBS            truths made and rebuilt at once (default 1)
+#              ONLY            an extended regular expression: only the truths whose names match it
+#              FLAGS           particles options added to both default solids (default none)
 #              SOLIDTEX_BIN    the solidtex binary (default ./build/cli/solidtex)
 set -euo pipefail
 size=${1:-128}
@@ -18,7 +20,8 @@ shift || true
 seeds=("$@")
 [ ${#seeds[@]} -eq 0 ] && seeds=(1 2)
 bin=${SOLIDTEX_BIN:-./build/cli/solidtex}
-read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox --arrangement best-fit --smoothing 0 --boundary walls}"
+read -r -a flags <<< "${FLAGS:-}"
+read -r -a baseline <<< "${BASELINE_FLAGS:---sizing bbox --arrangement best-fit --smoothing 0 --body-form 0 --boundary walls}"
 jobs=${JOBS:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -78,8 +81,9 @@ w1 = lambda r: r["truth"]["volume_wasserstein1_over_mean"]
 default = [f"{d['ks']:.3f}", f"{w1(d):.3f} / {w1(d2):.3f}",
            f"{d['truth']['whole_in_block']['volume_wasserstein1_over_mean']:.3f}",
            f"{band(d)} / {band(d2)} vs {d['truth']['volume_cdf_band']['truth_dkw_bound_90']:.3f}", *cells(d)[2:]]
+aspect = lambda r: f"{r['truth']['aspect_ks']:.3f}"
 row = [sys.argv[2], sys.argv[3], str(d["photo_particles"]), *default, *cells(b), *cells(i)[1:5],
-       f"{d['area_fraction']:.3f}"]
+       f"{d['area_fraction']:.3f}", aspect(d), aspect(b), aspect(i)]
 print("| " + " | ".join(row) + " |")
 PY
   fi
@@ -91,8 +95,8 @@ measure_one() {
   local seed=$1 dir=$2
   shift 2
   "$bin" truth -o "$dir/t" --seed "$seed" "$@" > /dev/null || return
-  "$bin" particles "$dir/t/photo.png" -o "$dir/default.vdb" --size "$size" --quiet > /dev/null || return
-  "$bin" particles "$dir/t/photo.png" -o "$dir/default2.vdb" --size "$size" --seed 2 --quiet > /dev/null || return
+  "$bin" particles "$dir/t/photo.png" -o "$dir/default.vdb" --size "$size" "${flags[@]}" --quiet > /dev/null || return
+  "$bin" particles "$dir/t/photo.png" -o "$dir/default2.vdb" --size "$size" --seed 2 "${flags[@]}" --quiet > /dev/null || return
   "$bin" particles "$dir/t/photo.png" -o "$dir/baseline.vdb" --size "$size" "${baseline[@]}" --quiet > /dev/null || return
   for run in default default2 baseline; do
     "$bin" compare "$dir/t/photo.png" "$dir/$run.vdb" --truth "$dir/t/truth.vdb" --report "$dir/$run.json" > /dev/null || return
@@ -131,15 +135,17 @@ print(" ".join(rest))
 PY
 }
 
-echo "Baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
+echo "Default solids' options: ${flags[*]:-none}; baseline: ${baseline[*]}; solids ${size}^3; truth seeds ${seeds[*]}."
 echo
 echo "| truth | seed | photo particles | KS | volume W1/mean, placed, solid seeds 1 / 2 | volume W1/mean, whole in block, seed 1 | band: largest excursion, seeds 1 / 2 vs the truth's bound | solidity KS | roundness KS | window spread ratio | volume fraction |" \
      "baseline KS | baseline volume W1/mean | baseline solidity KS | baseline roundness KS | baseline window spread ratio | baseline volume fraction |" \
-     "ideal volume W1/mean | ideal solidity KS | ideal roundness KS | ideal window spread ratio | photo fraction |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+     "ideal volume W1/mean | ideal solidity KS | ideal roundness KS | ideal window spread ratio | photo fraction |" \
+     "aspect KS | baseline aspect KS | ideal aspect KS |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 index=0
 for truth in "${truths[@]}"; do
   name=${truth%%|*}
+  [[ -n ${ONLY:-} && ! $name =~ $ONLY ]] && continue
   read -r -a options <<< "${truth#*|}"
   for seed in "${seeds[@]}"; do
     index=$((index + 1))

@@ -6,6 +6,7 @@
 #include "cli/optionChecks.h"
 #include "common/ThreadLimit.h"
 #include "parallel/Communicator.h"
+#include "particles/fitBodyForm.h"
 #include "particles/fitHullSmoothing.h"
 #include "pipeline/particleSolidJob.h"
 
@@ -97,6 +98,14 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
           "Rounding of the hulls' edges as a share of a particle's size, 0 (the paper's sharp hulls) "
           "to 0.5, or auto: as round as the photo's particles")
       ->capture_default_str();
+  auto bodyForm = std::make_shared<std::string>("0");
+  command
+      ->add_option(
+          "--body-form", *bodyForm,
+          "Each particle box's middle side moved this share of the way to its longest (1: discs) or, "
+          "negative, to its shortest (-1: rods); 0 keeps the paper's boxes; auto: sections as "
+          "elongated as the photo's particles (flattened grains)")
+      ->capture_default_str();
   command->add_option("--shapes", job->particles.shapes, "Distinct hull shapes built and reused (1-4096)")
       ->capture_default_str();
   command->add_option(
@@ -121,7 +130,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
   addSegmentationOptions(*command, job->segmentation);
   addPhaseOptions(*command, job->phases);
   return [job, size, dims, placer, sizing, arrangement, boundary, matrix, particleTexture, smoothing,
-          threads] {
+          bodyForm, threads] {
     job->dims = dims->empty() ? Dims{*size, *size, *size} : Dims{(*dims)[0], (*dims)[1], (*dims)[2]};
     job->placer = parsePlacerKind(*placer);
     job->sizing = parseSizing(*sizing);
@@ -130,6 +139,7 @@ Action addParticlesCommand(CLI::App& app, const std::string& commandLine) {
     job->matrix = parseTexture("--matrix", *matrix);
     job->particleTexture = parseTexture("--particle-texture", *particleTexture);
     job->smoothing = parseSmoothing(*smoothing);
+    job->bodyForm = parseBodyForm(*bodyForm);
     const ThreadLimit limit(threadsPerProcess(*threads));
     const auto report = runParticleSolid(*job);
     if (launchedAs().rank != 0) return 0;

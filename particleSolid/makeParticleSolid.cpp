@@ -80,14 +80,21 @@ std::optional<TiledMatrix> makeBlock(const ParticleSolidOptions& options, Textur
   return result;
 }
 
-// The photo's visual hulls, rounded as asked, or as far as makes their sections look like the photo's
-// particles at the sizes the solid will have (sized first with the sharp hulls).
+// The photo's visual hulls, formed and rounded as asked, or as far as makes their sections look like
+// the photo's particles at the sizes the solid will have (formed first, then sized with the sharp
+// hulls).
 ParticleFactory makeFactory(const ParticleSolidOptions& options, const ExemplarStats& stats,
-                            PlanePhotos planes, double scale, SmoothingFit& smoothing) {
+                            PlanePhotos planes, double scale, BodyFormFit& form, SmoothingFit& smoothing) {
   ParticleOptions particles = options.particles;
   particles.seed = options.seed;
   particles.smoothing.radius = options.smoothing.value_or(0);
-  ParticleFactory factory(stats, particles, planes);
+  particles.bodyForm = 0;
+  const ParticleFactory hulls(stats, particles, planes);
+  if (options.bodyForm)
+    form.form = *options.bodyForm;
+  else
+    form = fitBodyForm(stats, hulls, scale, options.seed);
+  ParticleFactory factory = hulls.withBodyForm(form.form);
   if (options.smoothing) {
     smoothing.radius = *options.smoothing;
     return factory;
@@ -269,7 +276,7 @@ void ParticleSolidBuilder::makeParticles() {
   const PlanePhotos planes = solid_.planeStats.size() == 2
                                  ? PlanePhotos{&solid_.planeStats[0], &solid_.planeStats[1]}
                                  : PlanePhotos{};
-  factory_.emplace(makeFactory(options_, stats, planes, scale, solid_.smoothing));
+  factory_.emplace(makeFactory(options_, stats, planes, scale, solid_.bodyForm, solid_.smoothing));
 
   solid_.timer.start("sizing");
   solid_.sizing = {1, {}, stats.histogram.ratios, 0, {}};

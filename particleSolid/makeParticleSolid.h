@@ -15,6 +15,7 @@
 #include "mesh/ParticleMesh.h"
 #include "particleSolid/synthesizeMatrix.h"
 #include "particles/ParticleFactory.h"
+#include "particles/fitBodyForm.h"
 #include "particles/fitHullSmoothing.h"
 #include "placement/SpaciousnessField.h"
 #include "placement/placeInBricks.h"
@@ -62,8 +63,10 @@ struct ParticleSolidOptions {
   Boundary boundary = Boundary::Open;
   Texture matrix = Texture::Synthesized;
   Texture particleTexture = Texture::Projected;  ///< the particles' insides
-  ParticleOptions particles;        ///< its seed is replaced by `seed`, its smoothing by `smoothing`
+  /// Its seed is replaced by `seed`, its smoothing by `smoothing`, its body form by `bodyForm`.
+  ParticleOptions particles;
   std::optional<double> smoothing;  ///< HullSmoothing::radius; none: fitted to the photo's particle shapes
+  std::optional<double> bodyForm = 0.0;  ///< ParticleOptions::bodyForm; none: fitted to the photo's sections
   std::uint64_t seed = 1;
   bool meshes = false;  ///< also mesh each particle's surface (ParticleSolid::meshes)
   /// The caller will paint every colour at once (exports, numpy arrays): the memory check counts it.
@@ -95,6 +98,7 @@ struct ParticleSolid {
   /// The xz and yz photos' statistics when the solid is made from three planes' photos; empty else.
   std::vector<ExemplarStats> planeStats;
   double voxelsPerPixel = 1;  ///< the photo's scale in the volume
+  BodyFormFit bodyForm;
   SmoothingFit smoothing;
   SectionSizing sizing;
   /// Of several phases sized from their sections: each one's size factor (ParticleFactory's phase

@@ -140,7 +140,8 @@ std::map<std::string, std::string> particleSolidMetadata(const ParticleSolid& so
       {"arrangement", arrangementName(options.arrangement)},
       {"boundary", boundaryName(options.boundary)},
       {"size_factor", std::to_string(solid.sizing.sizeFactor)},
-      {"smoothing", std::to_string(solid.smoothing.radius)}};
+      {"smoothing", std::to_string(solid.smoothing.radius)},
+      {"body_form", std::to_string(solid.bodyForm.form)}};
   addWholeVolumesMetadata(solid.wholeVolumes, metadata);
   if (solid.planeStats.size() == 2) {
     metadata["exemplar_xz"] = std::filesystem::path(solid.planeStats[0].name).filename().string();
@@ -184,6 +185,9 @@ nlohmann::json particleSolidReport(const ParticleSolid& solid, const ParticleSol
   report["volume"]["placed_particles"] = wholeVolumesJson(solid.wholeVolumes);
   report["volume"]["particle_bin_ratios"] = sizing.binRatios;  // the share per bin placement aimed at
   report["volume"]["size_factor"] = sizing.sizeFactor;
+  const bool formFitted = !options.bodyForm && solid.planeStats.empty();  // aligned boxes keep their form
+  report["body_form"] = {{"form", solid.bodyForm.form}, {"fitted", formFitted}};
+  if (formFitted) report["body_form"]["aspect_ks"] = solid.bodyForm.aspectKs;
   report["smoothing"] = {{"radius", solid.smoothing.radius}, {"fitted", !options.smoothing.has_value()}};
   if (!options.smoothing) {
     report["smoothing"]["solidity_ks"] = solid.smoothing.solidityKs;

@@ -1,6 +1,7 @@
 #include "particles/ParticleFactory.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -40,6 +41,8 @@ void checkOptions(const ParticleOptions& options) {
   if (!(options.smoothing.radius >= 0 && options.smoothing.radius <= 0.5))
     throw InputError("particle smoothing must be in [0, 0.5], got " +
                      std::to_string(options.smoothing.radius));
+  if (!(options.bodyForm >= -1 && options.bodyForm <= 1))
+    throw InputError("particle body form must be in [-1, 1], got " + std::to_string(options.bodyForm));
 }
 
 // Particles whose contours carve the hulls; those cut by the photo's border only when there is no other.
@@ -176,6 +179,18 @@ int drawAlignedDepth(const PlanePhotos& planes, int x, int y, Rng& rng) {
   return (x + y + 1) / 2;
 }
 
+// The sections of oblate bodies are as often narrow as wide, so the depth drawn from boxes sharing
+// a side makes their bodies triaxial; the form puts back the two long sides that discs have (or
+// the one that rods have).
+ParticleSize formedBox(ParticleSize size, double form) {
+  if (form == 0) return size;
+  std::array<int*, 3> sides{&size.width, &size.height, &size.depth};
+  std::sort(sides.begin(), sides.end(), [](const int* a, const int* b) { return *a < *b; });
+  const int gap = form > 0 ? *sides[2] - *sides[1] : *sides[1] - *sides[0];
+  *sides[1] += int(std::lround(form * gap));
+  return size;
+}
+
 int drawDepth(const std::vector<SizePair>& pairs, int width, int height, Rng& rng) {
   Weighted candidates = depthCandidates(pairs, width, height);
   if (candidates.empty()) candidates = anySide(pairs);
@@ -286,11 +301,25 @@ ParticleSize ParticleFactory::pickDepth(int width, int height, Rng& rng, int pha
   if (phasePairs_.size() > 1) {
     // The source first: its phase's particles, not the other phases', tell the depth.
     const int source = drawSource(stats_.particles, width, height, rng, phase);
-    return {width, height, drawDepth(phasePairs_[std::size_t(phaseOf(source))], width, height, rng), source};
+    return formedBox(
+        {width, height, drawDepth(phasePairs_[std::size_t(phaseOf(source))], width, height, rng), source},
+        options_.bodyForm);
   }
-  const int depth = aligned() ? drawAlignedDepth(planes_, width, height, rng)
-                              : drawDepth(stats_.sizePairs, width, height, rng);
-  return {width, height, depth, drawSource(stats_.particles, width, height, rng)};
+  if (aligned())
+    return {width, height, drawAlignedDepth(planes_, width, height, rng),
+            drawSource(stats_.particles, width, height, rng)};
+  const int depth = drawDepth(stats_.sizePairs, width, height, rng);
+  return formedBox({width, height, depth, drawSource(stats_.particles, width, height, rng)},
+                   options_.bodyForm);
+}
+
+ParticleFactory ParticleFactory::withBodyForm(double form) const {
+  ParticleOptions options = options_;
+  options.bodyForm = form;
+  checkOptions(options);
+  ParticleFactory out = *this;
+  out.options_ = options;
+  return out;
 }
 
 void ParticleFactory::setPhaseScales(std::vector<double> scales) {

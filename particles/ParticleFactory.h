@@ -16,6 +16,9 @@ struct ParticleOptions {
   int shapes = 64;           ///< distinct hulls built up front and reused with fresh sizes and rotations
   int contourVertices = 48;  ///< contours are simplified to about this many vertices before the CGAL work
   HullSmoothing smoothing;   ///< rounds the edges where the views' prisms meet
+  /// Moves each box's middle side this share of the way to its longest side (> 0: disc-like
+  /// bodies) or, negative, to its shortest (rod-like); 0 keeps the boxes the paper draws (3.5).
+  double bodyForm = 0;
   std::uint64_t seed = 1;
 };
 
@@ -52,7 +55,8 @@ public:
   /// source is drawn first, among `phase`'s particles (any phase's when it is negative), and the
   /// depth from its phase's pairs alone. Aligned, width is x and
   /// height y, and the depth (z) is the height of the xz photo's boxes as wide as x and of the yz
-  /// photo's as wide as y, by frequency (any of their heights when none is).
+  /// photo's as wide as y, by frequency (any of their heights when none is). The box's middle
+  /// side then moves as ParticleOptions::bodyForm says (not when aligned).
   ParticleSize pickDepth(int width, int height, Rng& rng, int phase = -1) const;
 
   /// A particle from a random pool hull under a random rotation (none when aligned), non-uniformly scaled to
@@ -78,6 +82,9 @@ public:
   /// The same pool of hulls smoothed otherwise (from the sharp visual hulls), the first `maxHulls`
   /// of them when positive; the CGAL work is not redone.
   ParticleFactory withSmoothing(const HullSmoothing& smoothing, int maxHulls = 0) const;
+
+  /// The same hulls with ParticleOptions::bodyForm `form`.
+  ParticleFactory withBodyForm(double form) const;
 
   const std::vector<HullMesh>& hulls() const { return hulls_; }
   const ParticleOptions& options() const { return options_; }

@@ -146,6 +146,23 @@ PhaseOptions phaseOptions(Keywords& keywords) {
   return options;
 }
 
+// A number in [-1, 1] or "auto" (fitted); 0 when not given.
+std::optional<double> bodyFormOf(Keywords& keywords) {
+  const py::object form = keywords.take("body_form");
+  if (form.is_none()) return 0.0;
+  const char* range = "body_form must be auto or a number from -1 to 1";
+  if (py::isinstance<py::str>(form)) {
+    if (form.cast<std::string>() != "auto") throw OptionError(range);
+    return std::nullopt;
+  }
+  if (py::isinstance<py::bool_>(form) ||
+      !(py::isinstance<py::int_>(form) || py::isinstance<py::float_>(form)))
+    keywords.wrongType("body_form", "a number or \"auto\"", form);
+  const double value = form.cast<double>();
+  if (!(value >= -1 && value <= 1)) throw OptionError(range);
+  return value;
+}
+
 ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
   ParticleSolidOptions options;
   options.segmentation = segmentationOptions(keywords);
@@ -164,6 +181,7 @@ ParticleSolidOptions particleSolidOptions(Keywords& keywords) {
   options.particles.views = int(keywords.integer("views").value_or(options.particles.views));
   options.particles.shapes = int(keywords.integer("shapes").value_or(options.particles.shapes));
   options.smoothing = keywords.number("smoothing");
+  options.bodyForm = bodyFormOf(keywords);
   options.seed = seedOf(keywords);
   options.brickEdge = int(keywords.integer("bricks").value_or(0));
   return options;
@@ -629,7 +647,8 @@ PYBIND11_MODULE(solidtex, m) {
         "arrays particle_id (Z, Y, X int32, 0 = matrix), color (Z, Y, X, 3 float32, linear RGB), with "
         "phases phase (Z, Y, X uint8: 0 matrix, 1..K), and the report (a dict). Keywords as the command "
         "line's options: size, dims, scale, placer, sizing, "
-        "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, bricks, seed, threads, "
+        "arrangement, boundary, matrix, particle_texture, views, shapes, smoothing, body_form, bricks, seed, "
+        "threads, "
         "mask, invert, split, outlines, min_area, phases, phase_mask; photo_xz and photo_yz (the other "
         "planes' photos of a "
         "material that differs by direction, photo then the xy plane's; one stands for both), pixel_sizes "

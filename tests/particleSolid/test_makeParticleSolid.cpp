@@ -62,6 +62,9 @@ TEST(MakeParticleSolid, AnInMemoryPhotoGivesASolidWithItsAreaFraction) {
        {"segmenting the photo", "building particle shapes", "sizing particles from their sections",
         "placing particles", "synthesizing the matrix", "painting the particles"})
     EXPECT_TRUE(steps.count(step)) << step;
+  const nlohmann::json form = particleSolidReport(solid, smallSolid(48))["body_form"];
+  EXPECT_EQ(form["form"], 0);  // the paper's boxes unless asked
+  EXPECT_FALSE(form["fitted"]);
 }
 
 TEST(MakeParticleSolid, TheStagesGiveTheOneOffFormsVolume) {

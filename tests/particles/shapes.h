@@ -36,12 +36,15 @@ inline std::vector<cv::Point> pixelContour(const std::vector<cv::Point>& outline
   return *largest;
 }
 
-inline std::vector<cv::Point> ellipseContour(double rx, double ry, cv::Point centre = {100, 100}) {
+// An ellipse of semi-axes rx and ry, its rx axis turned `angle` radians from x towards y.
+inline std::vector<cv::Point> ellipseContour(double rx, double ry, cv::Point centre = {100, 100},
+                                             double angle = 0) {
   std::vector<cv::Point> outline;
+  const double c = std::cos(angle), s = std::sin(angle);
   for (int i = 0; i < 720; ++i) {
-    const double t = 2 * kPi * i / 720;
-    outline.emplace_back(int(std::lround(centre.x + rx * std::cos(t))),
-                         int(std::lround(centre.y + ry * std::sin(t))));
+    const double t = 2 * kPi * i / 720, x = rx * std::cos(t), y = ry * std::sin(t);
+    outline.emplace_back(int(std::lround(centre.x + c * x - s * y)),
+                         int(std::lround(centre.y + s * x + c * y)));
   }
   return pixelContour(outline);
 }
@@ -79,6 +82,16 @@ inline ExemplarStats statsOf(const std::vector<std::vector<cv::Point>>& contours
     stats.particles.push_back(p);
   }
   for (const auto& [size, count] : pairs) stats.sizePairs.push_back({size.first, size.second, count});
+  return stats;
+}
+
+// Statistics with each particle's mask filled from its contour, as segmentation leaves them.
+inline ExemplarStats withMasks(ExemplarStats stats) {
+  for (Particle2D& p : stats.particles) {
+    p.mask = cv::Mat::zeros(p.box.size(), CV_8U);
+    cv::fillPoly(p.mask, std::vector{p.contour}, cv::Scalar(255), cv::LINE_8, 0, -p.box.tl());
+  }
+  stats.imageWidth = stats.imageHeight = 4000;
   return stats;
 }
 

@@ -12,16 +12,6 @@
 namespace solidtex {
 namespace {
 
-// Statistics with each particle's mask filled from its contour, as segmentation leaves them.
-ExemplarStats withMasks(ExemplarStats stats) {
-  for (Particle2D& p : stats.particles) {
-    p.mask = cv::Mat::zeros(p.box.size(), CV_8U);
-    cv::fillPoly(p.mask, std::vector{p.contour}, cv::Scalar(255), cv::LINE_8, 0, -p.box.tl());
-  }
-  stats.imageWidth = stats.imageHeight = 4000;
-  return stats;
-}
-
 ExemplarStats ellipseStats(int count, std::uint64_t seed) {
   Rng rng(seed);
   std::vector<std::vector<cv::Point>> contours;
@@ -47,8 +37,8 @@ TEST(SmoothHull, RoundsACubeIntoAClosedSurface) {
 }
 
 TEST(FitHullSmoothing, RoundPhotosGetRoundParticlesAndGravelKeepsItsEdges) {
-  const ExemplarStats ellipses = withMasks(ellipseStats(40, 3));
-  const ExemplarStats gravel = withMasks(test::gravelStats(40, 3));
+  const ExemplarStats ellipses = test::withMasks(ellipseStats(40, 3));
+  const ExemplarStats gravel = test::withMasks(test::gravelStats(40, 3));
   const SmoothingFit round =
       fitHullSmoothing(ellipses, ParticleFactory(ellipses, {.shapes = 16, .seed = 1}), 1, 1, 1);
   const SmoothingFit sharp =

@@ -48,6 +48,7 @@ TEST_P(ReconstructionOfATruth, DefaultsMatchThePhotoAndTheTruthBetterThanThePape
       job.sizing = Sizing::Bbox;
       job.arrangement = Arrangement::BestFit;
       job.smoothing = 0;
+      job.bodyForm = 0;
     }
     job.progress = false;
     runParticleSolid(job);

@@ -87,6 +87,7 @@ class InMemoryTest(unittest.TestCase):
         self.assertAlmostEqual(report["volume"]["volume_fraction"], float((ids > 0).mean()), places=12)
         self.assertEqual(report["volume"]["particles"], len(np.unique(ids[ids > 0])))
         self.assertEqual(report["photo"]["particle_count"], 30)
+        self.assertEqual(report["body_form"], {"form": 0, "fitted": False})  # the paper's boxes unless asked
 
     def test_phases_give_the_command_lines_phase_array(self):
         solid = solidtex.particles(SMARTIES, size=32, seed=3, phases=5)
@@ -240,7 +241,8 @@ class KeywordsTest(unittest.TestCase):
     def test_a_keyword_of_the_wrong_type_is_a_type_error_naming_it(self):
         for keywords, name in [({"size": "32"}, "size"), ({"size": True}, "size"), ({"seed": 1.5}, "seed"),
                                ({"dims": (8, 8)}, "dims"), ({"split": 1}, "split"), ({"output": 3}, "output"),
-                               ({"phases": True}, "phases"), ({"phases": 2.0}, "phases")]:
+                               ({"phases": True}, "phases"), ({"phases": 2.0}, "phases"),
+                               ({"body_form": True}, "body_form")]:
             with self.assertRaises(TypeError) as error:
                 solidtex.particles(COINS, **keywords)
             self.assertIn(name, str(error.exception))
@@ -252,7 +254,8 @@ class KeywordsTest(unittest.TestCase):
         for keywords, name in [({"views": 7}, "views"), ({"scale": 100.0}, "scale"),
                                ({"particle_texture": "x"}, "particle_texture"), ({"placer": "x"}, "placer"),
                                ({"seed": -1}, "seed"), ({"outlines": "sharp"}, "outlines"),
-                               ({"phases": 0}, "phases"), ({"phases": "two"}, "phases")]:
+                               ({"phases": 0}, "phases"), ({"phases": "two"}, "phases"),
+                               ({"body_form": 1.5}, "body_form"), ({"body_form": "disc"}, "body_form")]:
             with self.assertRaises(ValueError) as error:
                 solidtex.particles(COINS, size=16, **keywords)
             self.assertIn(name, str(error.exception))

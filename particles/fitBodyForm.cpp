@@ -1,0 +1,62 @@
+#include "particles/fitBodyForm.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "common/Error.h"
+#include "common/distributionDistance.h"
+#include "particles/sectionShapes.h"
+
+namespace solidtex {
+namespace {
+
+constexpr int kShapesPerCandidate = 96;
+constexpr int kPlanesPerShape = 8;
+constexpr double kKsTolerance = 0.01;             // KS differences below it are the sections' sampling noise
+constexpr std::uint64_t kFitStream = 0x666f726d;  // "form"
+
+}  // namespace
+
+std::optional<double> parseBodyForm(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  std::size_t used = 0;
+  double form = 2;
+  try {
+    form = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(form >= -1 && form <= 1))
+    throw OptionError("--body-form must be auto or a number from -1 to 1, got '" + text + "'");
+  return form;
+}
+
+std::vector<double> bodyFormCandidates() { return {-0.5, -0.25, 0, 0.25, 0.5, 0.75, 1}; }
+
+BodyFormFit fitBodyForm(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
+                        std::uint64_t seed) {
+  if (factory.aligned()) return {0, 1};
+  const ShapeColumns photo = photoShapes(stats, voxelsPerPixel);
+  const std::vector<double> forms = bodyFormCandidates();
+  std::vector<BodyFormFit> fits(forms.size());
+  tbb::parallel_for(std::size_t(0), forms.size(), [&](std::size_t c) {
+    const ParticleFactory candidate = factory.withBodyForm(forms[c]);
+    Rng rng(deriveSeed(seed, kFitStream));  // the same particles and planes for every candidate
+    const ShapeColumns sections = sectionShapes(stats, candidate, voxelsPerPixel, 1, kShapesPerCandidate,
+                                                kPlanesPerShape, SectionAxis::ByExtent, rng);
+    fits[c] = {forms[c], ksStatistic(photo.aspect, sections.aspect)};
+  });
+  // Round sections fit every form alike: the paper's boxes unless another form fits clearly better.
+  const double best =
+      std::min_element(fits.begin(), fits.end(), [](const BodyFormFit& a, const BodyFormFit& b) {
+        return a.aspectKs < b.aspectKs;
+      })->aspectKs;
+  BodyFormFit chosen{2, 1};
+  for (const BodyFormFit& fit : fits)
+    if (fit.aspectKs <= best + kKsTolerance && std::abs(fit.form) < std::abs(chosen.form)) chosen = fit;
+  return chosen;
+}
+
+}  // namespace solidtex
