@@ -53,10 +53,13 @@ BodyFormFit fitBodyForm(const ExemplarStats& stats, const ParticleFactory& facto
       std::min_element(fits.begin(), fits.end(), [](const BodyFormFit& a, const BodyFormFit& b) {
         return a.aspectKs < b.aspectKs;
       })->aspectKs;
-  BodyFormFit chosen{2, 1};
+  const BodyFormFit* chosen = nullptr;
   for (const BodyFormFit& fit : fits)
-    if (fit.aspectKs <= best + kKsTolerance && std::abs(fit.form) < std::abs(chosen.form)) chosen = fit;
-  return chosen;
+    if (fit.aspectKs <= best + kKsTolerance &&
+        (!chosen || std::abs(fit.form) < std::abs(chosen->form) ||
+         (std::abs(fit.form) == std::abs(chosen->form) && fit.aspectKs < chosen->aspectKs)))
+      chosen = &fit;
+  return *chosen;
 }
 
 }  // namespace solidtex

@@ -1,7 +1,6 @@
 #include "particles/fitHullSmoothing.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include <tbb/parallel_for.h>
 

@@ -51,7 +51,7 @@ ShapeColumns photoShapes(const ExemplarStats& stats, double voxelsPerPixel) {
 
 // A uniform offset across the shape, as a random plane meets a particle.
 ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                           double sizeFactor, int shapes, int planesPerShape, SectionAxis axes, Rng& rng) {
+                           double sizeFactor, int shapes, int planesPerShape, SectionAxis cuts, Rng& rng) {
   const std::vector<std::size_t> sources = statisticalParticles(stats.particles);
   const auto scaled = [&](int pixels) {
     return std::max(1, int(std::lround(pixels * voxelsPerPixel * sizeFactor)));
@@ -65,7 +65,7 @@ ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& fa
     const int extent[3] = {shape.dims.x, shape.dims.y, shape.dims.z};
     for (int p = 0; p < planesPerShape; ++p) {
       const int axis = factory.aligned()               ? 2  // as the xy photo shows them
-                       : axes == SectionAxis::ByExtent ? cutAxis(extent, rng)
+                       : cuts == SectionAxis::ByExtent ? cutAxis(extent, rng)
                                                        : int(uniformIndex(rng, 3));
       const std::vector<cv::Point> pixels =
           layerPixels(shape, axis, int(uniformIndex(rng, std::uint64_t(extent[axis]))));

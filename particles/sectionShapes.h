@@ -12,6 +12,9 @@
 
 namespace solidtex {
 
+/// Regions smaller than this (voxels) are too coarse to have a shape.
+inline constexpr double kMinShapeArea = 20;
+
 /// The photo's statistical particles as the solid would show them: masks resampled to
 /// `voxelsPerPixel`, those of at least kMinShapeArea voxels.
 ShapeColumns photoShapes(const ExemplarStats& stats, double voxelsPerPixel);
@@ -26,9 +29,6 @@ enum class SectionAxis {
 /// particles times `voxelsPerPixel * sizeFactor`, `planesPerShape` each, those of at least
 /// kMinShapeArea voxels; aligned particles are cut across z. Deterministic for the state of `rng`.
 ShapeColumns sectionShapes(const ExemplarStats& stats, const ParticleFactory& factory, double voxelsPerPixel,
-                           double sizeFactor, int shapes, int planesPerShape, SectionAxis axes, Rng& rng);
-
-/// Regions smaller than this (voxels) are too coarse to have a shape.
-inline constexpr double kMinShapeArea = 20;
+                           double sizeFactor, int shapes, int planesPerShape, SectionAxis cuts, Rng& rng);
 
 }  // namespace solidtex

@@ -206,6 +206,7 @@ TEST_F(BadInput, ValuesOutOfRangeAreCommandLineErrorsNamingTheOption) {
       {"truth -o OUT/t --dims 64 64 1", "--dims"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --smoothing 0.9", "--smoothing"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --body-form 1.5", "--body-form"},
+      {"particles IN/coins.png -o OUT/a.vdb --size 16 --body-form disc", "--body-form"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --phases 0", "--phases"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --pixel-sizes 1 2 2", "--pixel-sizes"},
       {"particles IN/coins.png -o OUT/a.vdb --size 16 --photo-xz IN/coins.png --pixel-sizes 1 -2 2",

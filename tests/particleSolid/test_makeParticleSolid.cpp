@@ -91,5 +91,16 @@ TEST(MakeParticleSolid, OptionsOutOfRangeAreRefusedBeforeAnyWork) {
   EXPECT_THROW(ParticleSolidBuilder{options}, OptionError);
 }
 
+TEST(MakeParticleSolid, ABodyFormIsRefusedForThreePhotosWhoseParticlesKeepTheirAxes) {
+  ParticleSolidOptions options = quickSolid(32);
+  options.bodyForm = 0.5;
+  ParticleSolidBuilder builder(options);
+  const cv::Mat photo = discsPhoto();
+  builder.analyze(photo, "discs");
+  cv::Mat other;
+  cv::flip(photo, other, 0);
+  EXPECT_THROW(builder.analyzePlanes(other, "xz", other, "yz"), OptionError);
+}
+
 }  // namespace
 }  // namespace solidtex

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -12,8 +13,9 @@
 namespace solidtex {
 namespace {
 
-// A photo of random plane sections of randomly turned spheroids, semi-axes (r, r, r * axisRatio):
-// ellipses of the plane's block of the turned quadric, which the plane's offset only scales.
+// A photo of random plane sections of randomly turned spheroids, semi-axes (r, r, r * axisRatio),
+// each kept with the chance a plane across z meets it (its z extent over its largest): ellipses of
+// the plane's block of the turned quadric, which the plane's offset only scales.
 ExemplarStats spheroidSectionStats(double axisRatio, int count, std::uint64_t seed) {
   Rng rng(seed);
   std::vector<std::vector<cv::Point>> contours;
@@ -22,6 +24,7 @@ ExemplarStats spheroidSectionStats(double axisRatio, int count, std::uint64_t se
     const Eigen::Matrix3d turn = randomRotation(rng);
     const Eigen::Matrix3d quadric =
         turn * Eigen::Vector3d(1, 1, 1 / (axisRatio * axisRatio)).asDiagonal() * turn.transpose() / (r * r);
+    if (uniform01(rng) * r > std::sqrt(quadric.inverse()(2, 2))) continue;
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> plane(quadric.topLeftCorner<2, 2>());
     const double offset = 2 * uniform01(rng) - 1, shrink = std::sqrt(1 - offset * offset);
     const double major = shrink / std::sqrt(plane.eigenvalues()[0]),
