@@ -256,7 +256,7 @@ void ParticleSolidBuilder::analyzePlanes(const cv::Mat& xzSrgb, const std::strin
     throw OptionError(
         "--phases and --phase-mask sort one photo's particles: give them without --photo-xz "
         "and --photo-yz");
-  if (options_.bodyForm != 0.0)
+  if (options_.bodyForm && *options_.bodyForm != 0)
     throw OptionError("--body-form forms one photo's particles; three photos' keep their aligned boxes");
   report(progress_, "segmenting the xz and yz photos");
   const ExemplarStats xz = analyzeExemplar(xzSrgb, xzName, options_.segmentation);

@@ -100,6 +100,10 @@ TEST(MakeParticleSolid, ABodyFormIsRefusedForThreePhotosWhoseParticlesKeepTheirA
   cv::Mat other;
   cv::flip(photo, other, 0);
   EXPECT_THROW(builder.analyzePlanes(other, "xz", other, "yz"), OptionError);
+  options.bodyForm = std::nullopt;  // auto: the aligned boxes are kept, not refused
+  ParticleSolidBuilder fitted(options);
+  fitted.analyze(photo, "discs");
+  EXPECT_NO_THROW(fitted.analyzePlanes(other, "xz", other, "yz"));
 }
 
 }  // namespace
