@@ -5,8 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "common/Error.h"
 #include "common/distributionDistance.h"
+#include "particles/parseAutoOrNumber.h"
 #include "particles/sectionShapes.h"
 
 namespace solidtex {
@@ -20,17 +20,7 @@ constexpr std::uint64_t kFitStream = 0x666f726d;  // "form"
 }  // namespace
 
 std::optional<double> parseBodyForm(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  std::size_t used = 0;
-  double form = 2;
-  try {
-    form = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(form >= -1 && form <= 1))
-    throw OptionError("--body-form must be auto or a number from -1 to 1, got '" + text + "'");
-  return form;
+  return parseAutoOrNumber(text, "--body-form", -1, 1);
 }
 
 std::vector<double> bodyFormCandidates() { return {-0.5, -0.25, 0, 0.25, 0.5, 0.75, 1}; }

@@ -4,8 +4,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "common/Error.h"
 #include "common/distributionDistance.h"
+#include "particles/parseAutoOrNumber.h"
 #include "particles/sectionShapes.h"
 
 namespace solidtex {
@@ -19,17 +19,7 @@ constexpr std::uint64_t kFitStream = 0x736d6f6f;  // "smoo"
 }  // namespace
 
 std::optional<double> parseSmoothing(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  std::size_t used = 0;
-  double radius = -1;
-  try {
-    radius = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(radius >= 0 && radius <= 0.5))
-    throw OptionError("--smoothing must be auto or a number from 0 to 0.5, got '" + text + "'");
-  return radius;
+  return parseAutoOrNumber(text, "--smoothing", 0, 0.5);
 }
 
 std::vector<double> smoothingCandidates() { return {0, 0.02, 0.04, 0.06, 0.08, 0.1, 0.12, 0.16, 0.2}; }
